@@ -1,0 +1,211 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H
+#define CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H
+
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+
+/// \ingroup PkgPoissonDiskSampling3Concepts
+/// \cgalModels `SurfaceFragmentTraits_3`
+///
+/// Triangles as surface fragments (paper Section 4). The surface is a set of triangles added with
+/// `add_triangle()`; the fragments are the sub-triangles of the regular 4-to-1 midpoint subdivision
+/// of each one. A fragment is stored as its face, its subdivision level and one corner in the face's
+/// parameter space (u, v), where the face is V0 + u (V1 - V0) + v (V2 - V0): corners and samples keep
+/// exact dyadic parameters, and a sample's barycentric coordinates are (1 - u - v, u, v).
+///
+/// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
+/// `sample_surface()` to sample triangles from another source.
+class Triangle_fragment_traits_3
+{
+public:
+  /// \name Types
+  /// @{
+
+  /// a point, as the engine computes with it
+  typedef std::array<double, 3> Point;
+
+  /// a sub-triangle of one face
+  struct Fragment
+  {
+    double u;             ///< parameter of the corner at the right angle in parameter space
+    double v;             ///< parameter of the corner at the right angle in parameter space
+    std::uint32_t face;   ///< index of the face, in the order of `add_triangle()`
+    std::uint8_t level;   ///< subdivision level: the legs in parameter space are 2^-level long
+    bool inverted;        ///< the legs point towards -u and -v instead of +u and +v
+  };
+
+  /// a sample: its point and where it lies
+  struct Sample
+  {
+    Point point;          ///< the sample
+    std::uint32_t face;   ///< index of the face, in the order of `add_triangle()`
+    double u;             ///< barycentric coordinate of the face's second vertex
+    double v;             ///< barycentric coordinate of the face's third vertex
+  };
+
+  /// @}
+
+  /// adds the triangle (`p0`, `p1`, `p2`) and returns its face index; a triangle of zero area is
+  /// kept (so that face indices follow the input) but has no fragment.
+  /// \throws Invalid_input if a coordinate is not finite
+  std::uint32_t add_triangle(const Point& p0, const Point& p1, const Point& p2)
+  {
+    for(const Point* p : {&p0, &p1, &p2})
+      for(double c : *p)
+        if(!std::isfinite(c))
+          throw Invalid_input("triangle " + std::to_string(faces_.size()) + " has a coordinate that is not finite");
+    if(faces_.size() >= std::numeric_limits<std::uint32_t>::max())
+      throw Invalid_input("too many triangles (at most 2^32 - 1)");
+    Face f;
+    f.v0 = p0;
+    double scale = 0;
+    for(int i = 0; i < 3; ++i) {
+      f.e1[i] = p1[i] - p0[i];
+      f.e2[i] = p2[i] - p0[i];
+      scale = (std::max)(scale, std::abs(p0[i]) + std::abs(f.e1[i]) + std::abs(f.e2[i]));
+    }
+    const Point n = cross(f.e1, f.e2);
+    f.area = 0.5 * std::sqrt(dot(n, n));
+    // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
+    position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
+    faces_.push_back(f);
+    return std::uint32_t(faces_.size() - 1);
+  }
+
+  /// number of triangles added
+  std::size_t number_of_triangles() const { return faces_.size(); }
+
+  /// area of a triangle
+  double triangle_area(std::uint32_t face) const { return faces_[face].area; }
+
+  /// unit normal of a triangle (right-hand rule on its vertex order), or the zero vector if it has no area
+  Point triangle_normal(std::uint32_t face) const
+  {
+    const Face& f = faces_[face];
+    Point n = cross(f.e1, f.e2);
+    const double l = std::sqrt(dot(n, n));
+    if(l > 0)
+      for(double& c : n) c /= l;
+    return n;
+  }
+
+  /// \name Operations of SurfaceFragmentTraits_3
+  /// @{
+
+  /// a bound on the distance between a computed point of a triangle and the exact one
+  double position_error() const { return position_error_; }
+
+  /// writes one fragment per triangle of positive area
+  template <class OutputIterator>
+  OutputIterator initial_fragments(OutputIterator out) const
+  {
+    for(std::uint32_t i = 0; i < faces_.size(); ++i)
+      if(faces_[i].area > 0) *out++ = Fragment{0., 0., i, 0, false};
+    return out;
+  }
+
+  /// area of a fragment: a quarter of its parent's
+  double area(const Fragment& f) const { return std::ldexp(faces_[f.face].area, -2 * int(f.level)); }
+
+  /// a point uniformly distributed on the fragment, never refused
+  template <class RandomGenerator>
+  std::optional<Sample> random_sample(const Fragment& f, RandomGenerator& rng) const
+  {
+    double a = rng.uniform(), b = rng.uniform();
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const double h = leg(f);
+    Sample s;
+    s.face = f.face;
+    s.u = f.u + h * a;
+    s.v = f.v + h * b;
+    s.point = at(faces_[f.face], s.u, s.v);
+    return s;
+  }
+
+  /// the point of a sample
+  const Point& point(const Sample& s) const { return s.point; }
+
+  /// the centroid of the fragment
+  Point reference_point(const Fragment& f) const
+  {
+    const double t = leg(f) / 3;
+    return at(faces_[f.face], f.u + t, f.v + t);
+  }
+
+  /// true only if the three corners are within `radius` of `center` by more than their rounding error,
+  /// so that the exact sub-triangle lies in the ball
+  bool is_covered(const Fragment& f, const Point& center, double radius) const
+  {
+    const double r = radius - 4 * position_error_;
+    if(!(r > 0)) return false;
+    const double r2 = r * r * (1 - 8 * std::numeric_limits<double>::epsilon());
+    const Face& face = faces_[f.face];
+    const double h = leg(f);
+    return squared_distance(at(face, f.u, f.v), center) <= r2 &&
+           squared_distance(at(face, f.u + h, f.v), center) <= r2 &&
+           squared_distance(at(face, f.u, f.v + h), center) <= r2;
+  }
+
+  /// the four children of the midpoint subdivision
+  template <class OutputIterator>
+  OutputIterator split(const Fragment& f, OutputIterator out) const
+  {
+    const std::uint8_t l = std::uint8_t(f.level + 1);
+    const double h = 0.5 * leg(f); // signed, like leg()
+    *out++ = Fragment{f.u, f.v, f.face, l, f.inverted};
+    *out++ = Fragment{f.u + h, f.v, f.face, l, f.inverted};
+    *out++ = Fragment{f.u, f.v + h, f.face, l, f.inverted};
+    *out++ = Fragment{f.u + h, f.v + h, f.face, l, !f.inverted}; // the middle one is flipped
+    return out;
+  }
+
+  /// @}
+
+private:
+  struct Face
+  {
+    Point v0, e1, e2;
+    double area;
+  };
+
+  // the signed leg length in parameter space
+  static double leg(const Fragment& f) { return std::ldexp(f.inverted ? -1. : 1., -int(f.level)); }
+
+  static Point at(const Face& f, double u, double v)
+  {
+    return Point{{f.v0[0] + u * f.e1[0] + v * f.e2[0], f.v0[1] + u * f.e1[1] + v * f.e2[1],
+                  f.v0[2] + u * f.e1[2] + v * f.e2[2]}};
+  }
+  static Point cross(const Point& a, const Point& b)
+  {
+    return Point{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+  }
+  static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  static double squared_distance(const Point& a, const Point& b)
+  {
+    const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+    return x * x + y * y + z * z;
+  }
+
+  std::vector<Face> faces_;
+  double position_error_ = 0;
+};
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H

@@ -1,0 +1,48 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_EXCEPTIONS_H
+#define CGAL_POISSON_DISK_SAMPLING_3_EXCEPTIONS_H
+
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Thrown for input that cannot be sampled: an empty surface, a face that is not a triangle,
+/// NaN or infinite coordinates, a radius, minimum distance or point count that is not positive and
+/// finite, or contradictory size parameters. The message says which.
+class Invalid_input : public std::invalid_argument
+{
+public:
+  /// constructs the exception with a message
+  explicit Invalid_input(const std::string& what) : std::invalid_argument("Poisson_disk_sampling_3: " + what) {}
+};
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Thrown before any large allocation when a request would produce more points than the bound
+/// `maximum_number_of_points` (default 100 million): the expected count area / (pi r^2) is checked
+/// first, and the actual count while sampling (thin or scattered surfaces can exceed the estimate).
+class Point_limit_exceeded : public std::length_error
+{
+public:
+  /// constructs the exception with a message
+  explicit Point_limit_exceeded(const std::string& what) : std::length_error("Poisson_disk_sampling_3: " + what) {}
+};
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Thrown by the `number_of_points` mode when no minimum distance found within its iteration budget
+/// gives the requested count within the tolerance (1%, at least one point).
+class Target_not_reached : public std::runtime_error
+{
+public:
+  /// constructs the exception with a message
+  explicit Target_not_reached(const std::string& what) : std::runtime_error("Poisson_disk_sampling_3: " + what) {}
+};
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_EXCEPTIONS_H

@@ -1,0 +1,104 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_COVERAGE_CERTIFIER_H
+#define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_COVERAGE_CERTIFIER_H
+
+#include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
+
+#include <array>
+#include <iterator>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+struct Certificate
+{
+  bool maximal = true;
+  double uncovered_area = 0;   // area of the fragments not proven covered (an upper bound)
+  bool has_witness = false;    // a point of the surface proven farther than D from every sample
+  std::array<double, 3> witness{{0, 0, 0}};
+};
+
+/// Proves that every point of the surface lies within distance D of some sample, or measures where
+/// it fails. Each root fragment is split with the model's own `split` until one sample's ball covers
+/// each piece (the model's conservative `is_covered`). A piece whose reference point is farther than
+/// D from every sample (decided exactly) is uncovered for sure: it is refined only down to
+/// `leaf_area` and counted. A piece still undecided at `max_depth` is counted too.
+template <class Traits>
+Certificate certify_coverage(const Traits& traits, const Point_hash_grid& samples, double d,
+                             int max_depth = 48)
+{
+  typedef typename Traits::Fragment Fragment;
+  struct Item
+  {
+    Fragment fragment;
+    int depth;
+  };
+
+  std::vector<Fragment> roots;
+  traits.initial_fragments(std::back_inserter(roots));
+  double total_area = 0;
+  for(const Fragment& f : roots) total_area += traits.area(f);
+  const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
+
+  Certificate result;
+  std::vector<Item> stack;
+  std::vector<Fragment> children;
+  std::vector<const double*> near;
+  const double d2_near = d * d * (1 + 1e-9);
+  for(const Fragment& root : roots) {
+    if(!(traits.area(root) > 0)) continue;
+    stack.push_back(Item{root, 0});
+    while(!stack.empty()) {
+      const Item item = stack.back();
+      stack.pop_back();
+      const std::array<double, 3> ref = traits.reference_point(item.fragment);
+      near.clear();
+      bool ref_covered = false;
+      samples.for_each_near(ref.data(), d, [&](Point_hash_grid::Index, const double* q) {
+        const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
+        if(dx * dx + dy * dy + dz * dz > d2_near) return;
+        near.push_back(q);
+        if(!ref_covered && compare_distance_exact(ref.data(), q, d) != CGAL::LARGER) ref_covered = true;
+      });
+      bool covered = false;
+      for(const double* q : near)
+        if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) {
+          covered = true;
+          break;
+        }
+      if(covered) continue;
+      const double area = traits.area(item.fragment);
+      if(!ref_covered) {
+        result.maximal = false;
+        if(!result.has_witness) {
+          result.has_witness = true;
+          result.witness = ref;
+        }
+        if(area <= leaf_area) {
+          result.uncovered_area += area;
+          continue;
+        }
+      }
+      if(item.depth >= max_depth) {
+        result.maximal = false;
+        result.uncovered_area += area;
+        continue;
+      }
+      children.clear();
+      traits.split(item.fragment, std::back_inserter(children));
+      for(const Fragment& c : children) stack.push_back(Item{c, item.depth + 1});
+    }
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_COVERAGE_CERTIFIER_H

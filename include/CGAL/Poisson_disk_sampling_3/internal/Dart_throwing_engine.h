@@ -1,0 +1,174 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_DART_THROWING_ENGINE_H
+#define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_DART_THROWING_ENGINE_H
+
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Active_fragment_pool.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+typedef std::array<double, 3> Point_d;
+
+/// what a run did, for tests and benchmarks
+struct Engine_statistics
+{
+  std::size_t darts = 0;              // fragments picked and given a dart
+  std::size_t samples = 0;            // darts accepted
+  std::size_t dropped_at_max_depth = 0; // uncovered fragments dropped at the depth floor
+};
+
+/// Checks a surface's total area against the point bound, before anything large is allocated.
+inline void check_expected_count(double total_area, double minimum_distance, std::size_t max_points)
+{
+  const double r = 0.5 * minimum_distance;
+  const double expected = total_area / (3.14159265358979323846 * r * r);
+  if(!(expected <= double(max_points)))
+    throw Point_limit_exceeded("the expected number of points (about " + std::to_string(expected) +
+                               ", area / (pi r^2)) exceeds maximum_number_of_points (" +
+                               std::to_string(max_points) + "); use a larger radius or raise the bound");
+}
+
+/// The loop of the paper's Section 3.1 over any model of SurfaceFragmentTraits_3.
+/// See doc/Poisson_disk_sampling_3/design.md for why it is shaped this way.
+template <class Traits>
+class Dart_throwing_engine
+{
+public:
+  typedef typename Traits::Fragment Fragment;
+  typedef typename Traits::Sample Sample;
+
+  Dart_throwing_engine(const Traits& traits, double minimum_distance, std::uint64_t seed,
+                       std::size_t max_points, int max_depth = 40)
+    : traits_(traits), d_(minimum_distance), seed_(seed), max_points_(max_points), max_depth_(max_depth)
+  {
+    if(!(d_ > 0) || !std::isfinite(d_))
+      throw Invalid_input("the minimum distance must be positive and finite");
+    // Below this, rounding decides coverage and the subdivision would not end before max_depth.
+    if(!(d_ > 0x1.0p20 * traits_.position_error()))
+      throw Invalid_input("the minimum distance " + std::to_string(d_) +
+                          " is too small for the precision of the coordinates (rounding error " +
+                          std::to_string(traits_.position_error()) + ")");
+  }
+
+  /// Throws darts until the surface is covered; calls `output(sample)` for each accepted sample.
+  template <class SampleOutput>
+  Engine_statistics run(SampleOutput&& output)
+  {
+    std::vector<Fragment> roots;
+    traits_.initial_fragments(std::back_inserter(roots));
+    double total_area = 0, max_area = 0;
+    for(const Fragment& f : roots) {
+      const double a = traits_.area(f);
+      total_area += a;
+      if(a > max_area) max_area = a;
+    }
+    if(!(total_area > 0) || !std::isfinite(total_area))
+      throw Invalid_input("the surface has no part of positive, finite area to sample");
+    check_expected_count(total_area, d_, max_points_);
+
+    Active_fragment_pool<Item> pool(max_area);
+    for(const Fragment& f : roots) {
+      const double a = traits_.area(f);
+      if(a > 0) pool.push(Item{f, 0}, a);
+    }
+    roots = std::vector<Fragment>();
+
+    const double r = 0.5 * d_;
+    const std::size_t expected = std::size_t(total_area / (3.14159265358979323846 * r * r)) + 1;
+    Point_hash_grid grid(2 * d_ * (1 + 0x1.0p-10), expected < max_points_ ? expected : max_points_);
+    Random rng(seed_);
+    Engine_statistics stats;
+    std::vector<Point_d> near;          // samples within D of the dart: the only possible coverers
+    std::vector<Fragment> children;
+
+    while(!pool.empty()) {
+      const Item item = pool.pick_and_remove(rng);
+      const auto sample = traits_.random_sample(item.fragment, rng);
+      if(!sample) { // a rejection step in the model refused the dart; F stays as it is
+        pool.push(item, traits_.area(item.fragment));
+        continue;
+      }
+      ++stats.darts;
+      const Point_d p = traits_.point(*sample);
+      const bool free = gather_near(grid, p, near);
+      if(free) {
+        if(grid.size() >= max_points_)
+          throw Point_limit_exceeded("more than maximum_number_of_points (" + std::to_string(max_points_) +
+                                     ") samples; use a larger radius or raise the bound");
+        grid.insert(p.data());
+        ++stats.samples;
+        output(*sample);
+        near.assign(1, p);
+      }
+      if(is_covered_by_any(item.fragment, near)) continue;
+      if(item.depth >= max_depth_) {
+        ++stats.dropped_at_max_depth;
+        continue;
+      }
+      children.clear();
+      traits_.split(item.fragment, std::back_inserter(children));
+      for(const Fragment& c : children) {
+        const double a = traits_.area(c);
+        if(a > 0 && !is_covered_by_any(c, near))
+          pool.push(Item{c, static_cast<unsigned char>(item.depth + 1)}, a);
+      }
+    }
+    return stats;
+  }
+
+private:
+  struct Item
+  {
+    Fragment fragment;
+    unsigned char depth;
+  };
+
+  // Fills `near` with the samples within D of p (and a few just outside); returns true if p is at
+  // distance >= D from every sample, decided exactly.
+  bool gather_near(const Point_hash_grid& grid, const Point_d& p, std::vector<Point_d>& near) const
+  {
+    near.clear();
+    bool free = true;
+    const double d2_near = d_ * d_ * (1 + 1e-9);
+    grid.for_each_near(p.data(), d_, [&](Point_hash_grid::Index, const double* q) {
+      const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+      if(dx * dx + dy * dy + dz * dz > d2_near) return;
+      near.push_back(Point_d{q[0], q[1], q[2]});
+      if(free && compare_distance_exact(p.data(), q, d_) == CGAL::SMALLER) free = false;
+    });
+    return free;
+  }
+
+  bool is_covered_by_any(const Fragment& f, const std::vector<Point_d>& centers) const
+  {
+    for(const Point_d& c : centers)
+      if(traits_.is_covered(f, c, d_)) return true;
+    return false;
+  }
+
+  const Traits& traits_;
+  double d_;
+  std::uint64_t seed_;
+  std::size_t max_points_;
+  int max_depth_;
+};
+
+} // namespace internal
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_DART_THROWING_ENGINE_H

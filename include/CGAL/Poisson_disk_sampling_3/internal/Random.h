@@ -1,0 +1,61 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_RANDOM_H
+#define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_RANDOM_H
+
+#include <cstdint>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+// xoshiro256** seeded with splitmix64. We do not use <random> distributions: their output differs
+// between standard libraries, and the package promises the same points for the same seed everywhere.
+class Random
+{
+public:
+  explicit Random(std::uint64_t seed)
+  {
+    std::uint64_t x = seed;
+    for(std::uint64_t& si : s_) {
+      x += 0x9E3779B97F4A7C15ull;
+      std::uint64_t z = x;
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+      si = z ^ (z >> 31);
+    }
+  }
+
+  std::uint64_t next()
+  {
+    const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+    const std::uint64_t t = s_[1] << 17;
+    s_[2] ^= s_[0];
+    s_[3] ^= s_[1];
+    s_[1] ^= s_[2];
+    s_[0] ^= s_[3];
+    s_[2] ^= t;
+    s_[3] = rotl(s_[3], 45);
+    return result;
+  }
+
+  /// uniform double in [0, 1), 53 random bits
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+
+  /// uniform integer in [0, n), n > 0 (Lemire's multiply-shift; the bias is below 2^-32 for n < 2^32)
+  std::uint64_t uniform_index(std::uint64_t n)
+  {
+    return std::uint64_t((static_cast<unsigned __int128>(next()) * n) >> 64);
+  }
+
+private:
+  static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+  std::uint64_t s_[4];
+};
+
+} // namespace internal
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_RANDOM_H

@@ -1,0 +1,108 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_IS_MAXIMAL_H
+#define CGAL_POISSON_DISK_SAMPLING_3_IS_MAXIMAL_H
+
+#include <CGAL/Poisson_disk_sampling_3/is_poisson_disk_set.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Coverage_certifier.h>
+#include <CGAL/Poisson_disk_sampling_3/sample_sphere.h>
+#include <CGAL/Poisson_disk_sampling_3/sample_triangle_mesh.h>
+
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// The answer of `is_maximal()`: converts to `true` when every point of the surface is proven to lie
+/// within the minimum distance of a sample.
+/// @tparam Point_3 the point type of the surface
+template <class Point_3>
+struct Maximality_check
+{
+  bool maximal = true;  ///< every point of the surface is within the minimum distance of a sample
+  /// when not maximal: total area of the pieces of the surface that could not be proven covered, an
+  /// upper bound of the uncovered area (pieces are refined down to about d^2/64 before being counted)
+  double uncovered_area = 0;
+  /// when not maximal, a point of the surface proven farther than the minimum distance from every
+  /// sample (a place where one more sample fits), if one was found
+  std::optional<Point_3> uncovered_point;
+  /// `maximal`
+  explicit operator bool() const { return maximal; }
+};
+
+namespace internal {
+
+template <class Point_3, class Traits, class PointRange>
+Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& samples, double d)
+{
+  check_distance(d);
+  const std::vector<double> xyz = coordinates_of(samples);
+  const Point_hash_grid grid = grid_of(xyz, d);
+  const Certificate c = certify_coverage(traits, grid, d);
+  Maximality_check<Point_3> result;
+  result.maximal = c.maximal;
+  result.uncovered_area = c.uncovered_area;
+  if(c.has_witness) result.uncovered_point = Point_3(c.witness[0], c.witness[1], c.witness[2]);
+  return result;
+}
+
+} // namespace internal
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Certifies that `samples` is maximal on a triangle mesh for the minimum distance d: no point of the
+/// surface is farther than d from every sample, so no sample can be added.
+///
+/// Each face is split by midpoints until the ball of radius d around one sample holds the three
+/// corners of each piece, with a margin larger than the rounding error of the corners, down to pieces
+/// 2^-48 the size of their face. A `true` answer is a proof. A piece whose centroid is farther than d
+/// from every sample (decided exactly) is a proven gap, reported as `uncovered_point`.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// @tparam PointRange a range of `Point_3` of any CGAL kernel
+/// @tparam NamedParameters accepts `vertex_point_map` and `geom_traits`, as `sample_triangle_mesh()`
+/// \throws Invalid_input for bad input, as `sample_triangle_mesh()`
+/// \returns `Maximality_check<Point_3>`, with the point type of the mesh's kernel
+template <class TriangleMesh, class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
+auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimum_distance,
+           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
+  return internal::check_maximal<typename GT::Point_3>(internal::triangles_of_mesh(tm, np, face_of), samples,
+                                                       minimum_distance);
+}
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Certifies that `samples` is maximal on a polygon soup of triangles, as `is_maximal()` for meshes.
+/// @tparam PointRange a range of `Point_3`
+/// @tparam PolygonRange a range of ranges of three indices into `points`
+/// @tparam SampleRange a range of `Point_3` of any CGAL kernel
+template <class PointRange, class PolygonRange, class SampleRange>
+Maximality_check<typename std::iterator_traits<typename PointRange::const_iterator>::value_type>
+is_maximal_on_polygon_soup(const PointRange& points, const PolygonRange& polygons, const SampleRange& samples,
+                           double minimum_distance)
+{
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Point;
+  return internal::check_maximal<Point>(internal::triangles_of_soup(points, polygons), samples, minimum_distance);
+}
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Certifies that `samples` is maximal on a sphere: spherical rectangles are split until one sample's
+/// ball holds each of them entirely, with the exact closed-form test of `Sphere_fragment_traits_3`
+/// (right near the poles) and a margin larger than its rounding error.
+/// @tparam K a CGAL kernel
+/// @tparam PointRange a range of `Point_3` of any CGAL kernel
+template <class K, class PointRange>
+Maximality_check<typename K::Point_3> is_maximal(const CGAL::Sphere_3<K>& sphere, const PointRange& samples,
+                                                 double minimum_distance)
+{
+  return internal::check_maximal<typename K::Point_3>(internal::sphere_traits(sphere), samples, minimum_distance);
+}
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_IS_MAXIMAL_H

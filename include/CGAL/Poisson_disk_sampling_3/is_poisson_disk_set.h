@@ -1,0 +1,103 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_IS_POISSON_DISK_SET_H
+#define CGAL_POISSON_DISK_SAMPLING_3_IS_POISSON_DISK_SET_H
+
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// The answer of `is_poisson_disk_set()`: converts to `true` when the set is valid, and otherwise
+/// names a pair of points closer than the minimum distance.
+struct Poisson_disk_check
+{
+  bool valid = true;       ///< no two points are closer than the minimum distance
+  std::size_t first = 0;   ///< when not valid: index of one point of an offending pair
+  std::size_t second = 0;  ///< when not valid: index of the other point, `second > first`
+  /// `valid`
+  explicit operator bool() const { return valid; }
+};
+
+namespace internal {
+
+template <class PointRange>
+std::vector<double> coordinates_of(const PointRange& points)
+{
+  std::vector<double> xyz;
+  std::size_t i = 0;
+  for(const auto& p : points) {
+    for(double c : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}) {
+      if(!std::isfinite(c)) throw Invalid_input("point " + std::to_string(i) + " has a coordinate that is not finite");
+      xyz.push_back(c);
+    }
+    ++i;
+  }
+  return xyz;
+}
+
+inline void check_distance(double d)
+{
+  if(!(d > 0) || !std::isfinite(d)) throw Invalid_input("the minimum distance must be positive and finite");
+}
+
+/// a grid of the given points with cells of side 2d; refuses cells so small that cell indices overflow
+inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
+{
+  double m = 0;
+  for(double c : xyz) m = (std::max)(m, std::abs(c));
+  if(m / (2 * d) > 0x1.0p60)
+    throw Invalid_input("the minimum distance is too small for the extent of the points");
+  Point_hash_grid grid(2 * d * (1 + 0x1.0p-10), xyz.size() / 3);
+  for(std::size_t i = 0; i < xyz.size(); i += 3) grid.insert(&xyz[i]);
+  return grid;
+}
+
+} // namespace internal
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Checks that no two points are closer than `minimum_distance`: for every pair, |p - q| >= d is
+/// decided exactly on the stored coordinates (converted to double), with a floating-point filter and
+/// exact rational arithmetic where the filter cannot decide. Runs in expected linear time with a hash grid.
+///
+/// @tparam PointRange a range of `Point_3` of any CGAL kernel
+/// @param points the points
+/// @param minimum_distance the distance d = 2r
+/// \returns the verdict, and an offending pair if there is one
+/// \throws Invalid_input if d is not positive and finite or a coordinate is not finite
+template <class PointRange>
+Poisson_disk_check is_poisson_disk_set(const PointRange& points, double minimum_distance)
+{
+  internal::check_distance(minimum_distance);
+  const std::vector<double> xyz = internal::coordinates_of(points);
+  const internal::Point_hash_grid grid = internal::grid_of(xyz, minimum_distance);
+  Poisson_disk_check result;
+  for(std::size_t i = 0; i < xyz.size() / 3 && result.valid; ++i) {
+    const double* p = &xyz[3 * i];
+    grid.for_each_near(p, minimum_distance, [&](internal::Point_hash_grid::Index j, const double* q) {
+      if(!result.valid || j <= i) return;
+      if(internal::compare_distance_exact(p, q, minimum_distance) == CGAL::SMALLER) {
+        result.valid = false;
+        result.first = i;
+        result.second = j;
+      }
+    });
+  }
+  return result;
+}
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_IS_POISSON_DISK_SET_H

@@ -1,0 +1,62 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SPHERE_H
+#define CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SPHERE_H
+
+#include <CGAL/Poisson_disk_sampling_3/Sphere_fragment_traits_3.h>
+#include <CGAL/Poisson_disk_sampling_3/parameters.h>
+#include <CGAL/Poisson_disk_sampling_3/sample_surface.h>
+
+#include <CGAL/Sphere_3.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cmath>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+template <class K>
+Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
+{
+  const auto& c = sphere.center();
+  return Sphere_fragment_traits_3(
+      std::array<double, 3>{{CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())}},
+      std::sqrt(CGAL::to_double(sphere.squared_radius())));
+}
+
+} // namespace internal
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Generates a maximal Poisson-disk sample set on a sphere (paper Section 5.1), with Euclidean
+/// (chordal) distances between samples.
+///
+/// @tparam K a CGAL kernel
+/// @tparam PointOutputIterator an output iterator accepting `K::Point_3`
+/// @tparam NamedParameters a sequence of named parameters, as for `sample_surface()`
+///
+/// @param sphere the sphere (its orientation is ignored)
+/// @param out where the points are written
+/// @param np exactly one of `radius`, `minimum_distance` and `number_of_points`, and the options of
+///        `sample_surface()`
+///
+/// \returns the output iterator past the last point
+/// \throws Invalid_input for a sphere of zero or non-finite radius, a non-finite centre or a bad size
+/// \throws Point_limit_exceeded when the request exceeds `maximum_number_of_points`
+/// \throws Target_not_reached when `number_of_points` cannot be met
+template <class K, class PointOutputIterator, class NamedParameters = CGAL::parameters::Default_named_parameters>
+PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIterator out,
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const Sphere_fragment_traits_3 traits = internal::sphere_traits(sphere);
+  for(const auto& s : internal::sample_request(traits, np))
+    *out++ = typename K::Point_3(s.point[0], s.point[1], s.point[2]);
+  return out;
+}
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SPHERE_H

@@ -1,0 +1,227 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SURFACE_H
+#define CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SURFACE_H
+
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/parameters.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Dart_throwing_engine.h>
+
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// What a sampling call did; filled when passed as `statistics(std::ref(s))`.
+struct Sampling_statistics
+{
+  double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
+  std::size_t number_of_runs = 0;    ///< full dart-throwing runs: 1, or the search's runs for `number_of_points`
+  std::size_t darts = 0;             ///< darts thrown by the last run
+  std::size_t dropped_fragments = 0; ///< fragments dropped uncovered at the depth floor by the last run (normally 0)
+};
+
+namespace internal {
+
+/// the size of a request: a minimum distance, or a number of points to reach
+struct Size_request
+{
+  double minimum_distance = 0; // > 0 when the distance is given
+  std::size_t number_of_points = 0; // > 0 when a count is given
+};
+
+template <class NamedParameters>
+Size_request read_size(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  constexpr bool has_r = !is_default_parameter<NamedParameters, internal_np::radius_t>::value;
+  constexpr bool has_d = !is_default_parameter<NamedParameters, internal_np::minimum_distance_t>::value;
+  constexpr bool has_n = !is_default_parameter<NamedParameters, internal_np::number_of_points_t>::value;
+  if(int(has_r) + int(has_d) + int(has_n) != 1)
+    throw Invalid_input("give exactly one of radius(r), minimum_distance(2r) and number_of_points(n)");
+  Size_request s;
+  if(has_r || has_d) {
+    const double r = choose_parameter(get_parameter(np, internal_np::radius), 0.);
+    const double d = has_r ? 2 * r : double(choose_parameter(get_parameter(np, internal_np::minimum_distance), 0.));
+    if(!(d > 0) || !std::isfinite(d))
+      throw Invalid_input(std::string(has_r ? "the radius" : "the minimum distance") + " must be positive and finite");
+    s.minimum_distance = d;
+  } else {
+    const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_points), 0));
+    if(!(n >= 1) || !std::isfinite(n)) throw Invalid_input("number_of_points must be at least 1");
+    s.number_of_points = std::size_t(n);
+  }
+  return s;
+}
+
+template <class NamedParameters>
+std::uint64_t read_seed(const NamedParameters& np)
+{
+  return std::uint64_t(CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::random_seed), 0u));
+}
+
+template <class NamedParameters>
+std::size_t read_max_points(const NamedParameters& np)
+{
+  const double m = double(CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::maximum_number_of_points), 100000000.));
+  if(!(m >= 1) || !std::isfinite(m)) throw Invalid_input("maximum_number_of_points must be at least 1");
+  return std::size_t(m);
+}
+
+template <class Traits>
+double total_area(const Traits& traits)
+{
+  std::vector<typename Traits::Fragment> roots;
+  traits.initial_fragments(std::back_inserter(roots));
+  double a = 0;
+  for(const auto& f : roots) a += traits.area(f);
+  return a;
+}
+
+template <class Traits>
+std::vector<typename Traits::Sample> run_engine(const Traits& traits, double d, std::uint64_t seed,
+                                                std::size_t max_points, Sampling_statistics& stats)
+{
+  std::vector<typename Traits::Sample> samples;
+  Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
+  const Engine_statistics e = engine.run([&](const typename Traits::Sample& s) { samples.push_back(s); });
+  stats.minimum_distance = d;
+  ++stats.number_of_runs;
+  stats.darts = e.darts;
+  stats.dropped_fragments = e.dropped_at_max_depth;
+  return samples;
+}
+
+/// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run
+/// uses the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2
+/// points); later runs correct d with the slope of log(count) over log(d) measured between runs.
+/// Usually two or three full runs.
+template <class Traits>
+std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
+                                                   std::size_t max_points, Sampling_statistics& stats)
+{
+  if(n > max_points)
+    throw Point_limit_exceeded("number_of_points (" + std::to_string(n) +
+                               ") exceeds maximum_number_of_points (" + std::to_string(max_points) + ")");
+  const double area = total_area(traits);
+  if(!(area > 0) || !std::isfinite(area))
+    throw Invalid_input("the surface has no part of positive, finite area to sample");
+  const double tolerance = (std::max)(1., 0.01 * double(n));
+  double d = std::sqrt(0.6965 * area / double(n));
+  double slope = -2, last_d = 0, last_n = 0;
+  std::vector<typename Traits::Sample> best;
+  Sampling_statistics best_stats;
+  for(int run = 0; run < 12; ++run) {
+    std::vector<typename Traits::Sample> samples = run_engine(traits, d, seed, max_points, stats);
+    const double got = double(samples.size());
+    if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
+      best.swap(samples);
+      best_stats = stats;
+    }
+    if(std::abs(got - double(n)) <= tolerance) {
+      best_stats.number_of_runs = stats.number_of_runs;
+      stats = best_stats;
+      return best;
+    }
+    if(last_n > 0 && got != last_n && d != last_d) {
+      const double s = (std::log(got) - std::log(last_n)) / (std::log(d) - std::log(last_d));
+      slope = (std::min)(-1., (std::max)(-3., s));
+    }
+    last_d = d;
+    last_n = got;
+    d *= std::pow(double(n) / got, 1 / slope);
+  }
+  throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points within " +
+                           std::to_string(tolerance) + "; the closest had " + std::to_string(best.size()));
+}
+
+/// runs a size request; fills the `statistics` parameter if given
+template <class Traits, class NamedParameters>
+std::vector<typename Traits::Sample> sample_request(const Traits& traits, const NamedParameters& np)
+{
+  const Size_request size = read_size(np);
+  const std::uint64_t seed = read_seed(np);
+  const std::size_t max_points = read_max_points(np);
+  Sampling_statistics local;
+  Sampling_statistics& stats = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
+  stats = Sampling_statistics();
+  if(size.number_of_points > 0) return run_for_count(traits, size.number_of_points, seed, max_points, stats);
+  return run_engine(traits, size.minimum_distance, seed, max_points, stats);
+}
+
+} // namespace internal
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Generates a maximal Poisson-disk sample set on the surface described by `traits`, by the optimized
+/// dart throwing of the paper's Section 3. Every other sampling function of the package is a facade
+/// over this one.
+///
+/// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
+/// @tparam SampleOutputIterator an output iterator accepting `SurfaceFragmentTraits::Sample`
+/// @tparam NamedParameters a sequence of named parameters
+///
+/// @param traits the surface
+/// @param out where the samples are written, in the order they were accepted
+/// @param np the size of the request (exactly one of `radius`, `minimum_distance`, `number_of_points`)
+///        and options, among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{radius}
+///     \cgalParamDescription{the disk radius r: two samples are at least 2r apart, and every point of
+///       the surface is within 2r of a sample}
+///     \cgalParamType{double}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_distance}
+///     \cgalParamDescription{the minimum distance 2r between two samples, the same request as `radius(r)`}
+///     \cgalParamType{double}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_points}
+///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
+///       has N points within 1% (at least one point), usually in two or three full runs}
+///     \cgalParamType{std::size_t}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_number_of_points}
+///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) any request expected to give more points}
+///     \cgalParamType{std::size_t}
+///     \cgalParamDefault{100 million}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{receives what the call did, among which the minimum distance it used}
+///     \cgalParamType{`std::reference_wrapper<Sampling_statistics>` (pass `std::ref(s)`)}
+///     \cgalParamDefault{not filled}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{the seed: the same seed and input give the same samples}
+///     \cgalParamType{unsigned int}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the output iterator past the last sample
+/// \throws Invalid_input for a bad size or a surface with no area
+/// \throws Point_limit_exceeded when the bound is exceeded
+/// \throws Target_not_reached when `number_of_points` cannot be met
+template <class SurfaceFragmentTraits, class SampleOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+SampleOutputIterator sample_surface(const SurfaceFragmentTraits& traits, SampleOutputIterator out,
+                                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  for(const auto& s : internal::sample_request(traits, np)) *out++ = s;
+  return out;
+}
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SURFACE_H

@@ -1,0 +1,231 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_TRIANGLE_MESH_H
+#define CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_TRIANGLE_MESH_H
+
+#include <CGAL/Poisson_disk_sampling_3/Triangle_fragment_traits_3.h>
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/parameters.h>
+#include <CGAL/Poisson_disk_sampling_3/sample_surface.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// A sample on a triangle and where it lies: what hair, fur and mosaic placement need.
+/// @tparam GeomTraits a CGAL kernel
+/// @tparam Face the face handle: a `face_descriptor` for meshes, the polygon's index for soups
+template <class GeomTraits, class Face>
+struct Triangle_sample
+{
+  typename GeomTraits::Point_3 point;  ///< the sample
+  Face face;                          ///< the face it lies on
+  /// barycentric coordinates with respect to the face's vertices, in the order of
+  /// `CGAL::Polygon_mesh_processing::Face_location` for meshes (`source(halfedge(f))`,
+  /// `target(halfedge(f))`, `target(next(halfedge(f)))`), in the polygon's order for soups
+  std::array<typename GeomTraits::FT, 3> barycentric_coordinates;
+  typename GeomTraits::Vector_3 normal; ///< the face's unit normal (right-hand rule on that order)
+};
+
+namespace internal {
+
+template <class Point>
+std::array<double, 3> to_double_array(const Point& p)
+{
+  return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
+/// the faces of a FaceListGraph as a triangle set; rejects faces that are not triangles
+template <class TriangleMesh, class NamedParameters>
+Triangle_fragment_traits_3
+triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
+                  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_of)
+{
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
+  Triangle_fragment_traits_3 traits;
+  face_of.clear();
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    if(next(next(next(h, tm), tm), tm) != h)
+      throw Invalid_input("face " + std::to_string(face_of.size()) + " of the mesh is not a triangle; "
+                          "triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces()");
+    traits.add_triangle(to_double_array(get(vpm, source(h, tm))), to_double_array(get(vpm, target(h, tm))),
+                        to_double_array(get(vpm, target(next(h, tm), tm))));
+    face_of.push_back(f);
+  }
+  if(face_of.empty()) throw Invalid_input("the mesh has no faces");
+  return traits;
+}
+
+/// the triangles of a polygon soup; rejects polygons that are not triangles and bad indices
+template <class PointRange, class PolygonRange>
+Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const PolygonRange& polygons)
+{
+  std::vector<std::array<double, 3>> p;
+  for(const auto& q : points) p.push_back(to_double_array(q));
+  Triangle_fragment_traits_3 traits;
+  std::size_t i = 0;
+  for(const auto& polygon : polygons) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for(const auto& v : polygon) {
+      if(k < 3) t[k] = std::size_t(v);
+      ++k;
+    }
+    if(k != 3)
+      throw Invalid_input("polygon " + std::to_string(i) + " has " + std::to_string(k) +
+                          " vertices; only triangles are sampled (see CGAL::Polygon_mesh_processing::triangulate_polygons)");
+    for(std::size_t v : t)
+      if(v >= p.size())
+        throw Invalid_input("polygon " + std::to_string(i) + " refers to point " + std::to_string(v) +
+                            " of " + std::to_string(p.size()));
+    traits.add_triangle(p[t[0]], p[t[1]], p[t[2]]);
+    ++i;
+  }
+  if(i == 0) throw Invalid_input("the polygon soup has no polygons");
+  return traits;
+}
+
+template <class GeomTraits, class Face, class FaceOf>
+Triangle_sample<GeomTraits, Face> located_sample(const Triangle_fragment_traits_3& traits,
+                                                 const Triangle_fragment_traits_3::Sample& s, const FaceOf& face_of)
+{
+  typedef typename GeomTraits::FT FT;
+  const auto n = traits.triangle_normal(s.face);
+  return Triangle_sample<GeomTraits, Face>{
+      typename GeomTraits::Point_3(s.point[0], s.point[1], s.point[2]), face_of(s.face),
+      std::array<FT, 3>{{FT(1 - s.u - s.v), FT(s.u), FT(s.v)}}, typename GeomTraits::Vector_3(n[0], n[1], n[2])};
+}
+
+} // namespace internal
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Generates a maximal Poisson-disk sample set on a triangle mesh (paper Section 4) and writes its points.
+///
+/// Borders, several components and non-manifold edges need no care; faces of zero area are skipped.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// @tparam PointOutputIterator an output iterator accepting the mesh's `Point_3`
+/// @tparam NamedParameters a sequence of named parameters
+///
+/// @param tm the mesh
+/// @param out where the points are written
+/// @param np exactly one of `radius`, `minimum_distance` and `number_of_points`, and options: the
+///        ones of `sample_surface()` and the ones below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the kernel of the output points}
+///     \cgalParamType{a CGAL kernel}
+///     \cgalParamDefault{the kernel of the vertex point map's value type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the output iterator past the last point
+/// \throws Invalid_input for an empty mesh, a face that is not a triangle, a non-finite coordinate, a
+///         bad size, or a mesh of zero area
+/// \throws Point_limit_exceeded when the request exceeds `maximum_number_of_points`
+/// \throws Target_not_reached when `number_of_points` cannot be met
+template <class TriangleMesh, class PointOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+PointOutputIterator sample_triangle_mesh(const TriangleMesh& tm, PointOutputIterator out,
+                                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
+  const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
+  for(const auto& s : internal::sample_request(traits, np))
+    *out++ = typename GT::Point_3(s.point[0], s.point[1], s.point[2]);
+  return out;
+}
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Same as `sample_triangle_mesh()`, and writes for each sample its face, barycentric coordinates and
+/// the face normal.
+/// @tparam SampleOutputIterator an output iterator accepting
+///         `Triangle_sample<GeomTraits, boost::graph_traits<TriangleMesh>::%face_descriptor>`
+template <class TriangleMesh, class SampleOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+SampleOutputIterator sample_triangle_mesh_with_locations(const TriangleMesh& tm, SampleOutputIterator out,
+                                                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  std::vector<face_descriptor> face_of;
+  const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
+  for(const auto& s : internal::sample_request(traits, np))
+    *out++ = internal::located_sample<GT, face_descriptor>(traits, s, [&](std::uint32_t i) { return face_of[i]; });
+  return out;
+}
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Generates a maximal Poisson-disk sample set on a triangle soup, as CGAL's polygon-soup functions
+/// take it: a range of points and a range of polygons, each a range of three point indices.
+///
+/// @tparam PointRange a random-access range of `Point_3`
+/// @tparam PolygonRange a range of ranges of integer indices into `points`
+/// @tparam PointOutputIterator an output iterator accepting `Point_3`
+/// @tparam NamedParameters as for `sample_triangle_mesh()`, without `vertex_point_map`
+///
+/// \throws Invalid_input for no polygons, a polygon that is not a triangle, an index out of range,
+///         a non-finite coordinate, a bad size, or a soup of zero area
+/// \throws Point_limit_exceeded, Target_not_reached as `sample_triangle_mesh()`
+template <class PointRange, class PolygonRange, class PointOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonRange& polygons,
+                                        PointOutputIterator out,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Default_kernel;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                             Default_kernel>::type GT;
+  const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
+  for(const auto& s : internal::sample_request(traits, np))
+    *out++ = typename GT::Point_3(s.point[0], s.point[1], s.point[2]);
+  return out;
+}
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Same as `sample_polygon_soup()`, and writes for each sample the polygon's index, barycentric
+/// coordinates in the polygon's vertex order and its normal.
+/// @tparam SampleOutputIterator an output iterator accepting `Triangle_sample<GeomTraits, std::size_t>`
+template <class PointRange, class PolygonRange, class SampleOutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+SampleOutputIterator sample_polygon_soup_with_locations(const PointRange& points, const PolygonRange& polygons,
+                                                        SampleOutputIterator out,
+                                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Default_kernel;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                             Default_kernel>::type GT;
+  const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
+  for(const auto& s : internal::sample_request(traits, np))
+    *out++ = internal::located_sample<GT, std::size_t>(traits, s, [](std::uint32_t i) { return std::size_t(i); });
+  return out;
+}
+
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_TRIANGLE_MESH_H
