@@ -25,7 +25,10 @@ namespace Poisson_disk_sampling_3 {
 /// `add_triangle()`; the fragments are the sub-triangles of the regular 4-to-1 midpoint subdivision
 /// of each one. A fragment is stored as its face, its subdivision level and one corner in the face's
 /// parameter space (u, v), where the face is V0 + u (V1 - V0) + v (V2 - V0): corners and samples keep
-/// exact dyadic parameters, and a sample's barycentric coordinates are (1 - u - v, u, v).
+/// exact dyadic parameters. Each triangle is rotated to start at its lexicographically smallest corner,
+/// so that the samples depend on the geometry only, not on which corner a mesh data structure lists
+/// first (`Surface_mesh` and `Polyhedron_3` give the same points); `barycentric_coordinates()` maps
+/// back to the order in which the corners were given.
 ///
 /// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
 /// `sample_surface()` to sample triangles from another source.
@@ -53,8 +56,8 @@ public:
   {
     Point point;          ///< the sample
     std::uint32_t face;   ///< index of the face, in the order of `add_triangle()`
-    double u;             ///< barycentric coordinate of the face's second vertex
-    double v;             ///< barycentric coordinate of the face's third vertex
+    double u;             ///< parameter along the first edge of the rotated face (see `barycentric_coordinates()`)
+    double v;             ///< parameter along the last edge of the rotated face
   };
 
   /// @}
@@ -62,15 +65,20 @@ public:
   /// adds the triangle (`p0`, `p1`, `p2`) and returns its face index; a triangle of zero area is
   /// kept (so that face indices follow the input) but has no fragment.
   /// \throws Invalid_input if a coordinate is not finite
-  std::uint32_t add_triangle(const Point& p0, const Point& p1, const Point& p2)
+  std::uint32_t add_triangle(const Point& q0, const Point& q1, const Point& q2)
   {
-    for(const Point* p : {&p0, &p1, &p2})
+    const Point* q[3] = {&q0, &q1, &q2};
+    for(const Point* p : q)
       for(double c : *p)
         if(!std::isfinite(c))
           throw Invalid_input("triangle " + std::to_string(faces_.size()) + " has a coordinate that is not finite");
     if(faces_.size() >= std::numeric_limits<std::uint32_t>::max())
       throw Invalid_input("too many triangles (at most 2^32 - 1)");
     Face f;
+    f.first = std::uint8_t(q1 < q0 ? (q2 < q1 ? 2 : 1) : (q2 < q0 ? 2 : 0));
+    const Point& p0 = *q[f.first];
+    const Point& p1 = *q[(f.first + 1) % 3];
+    const Point& p2 = *q[(f.first + 2) % 3];
     f.v0 = p0;
     double scale = 0;
     for(int i = 0; i < 3; ++i) {
@@ -91,6 +99,18 @@ public:
 
   /// area of a triangle
   double triangle_area(std::uint32_t face) const { return faces_[face].area; }
+
+  /// barycentric coordinates of a sample with respect to its triangle's corners, in the order they
+  /// were given to `add_triangle()`
+  std::array<double, 3> barycentric_coordinates(const Sample& s) const
+  {
+    const int k = faces_[s.face].first;
+    std::array<double, 3> w;
+    w[k] = 1 - s.u - s.v;
+    w[(k + 1) % 3] = s.u;
+    w[(k + 2) % 3] = s.v;
+    return w;
+  }
 
   /// unit normal of a triangle (right-hand rule on its vertex order), or the zero vector if it has no area
   Point triangle_normal(std::uint32_t face) const
@@ -178,8 +198,9 @@ public:
 private:
   struct Face
   {
-    Point v0, e1, e2;
+    Point v0, e1, e2;   // the rotated triangle: v0, v0 + e1, v0 + e2
     double area;
+    std::uint8_t first; // which given corner is v0
   };
 
   // the signed leg length in parameter space

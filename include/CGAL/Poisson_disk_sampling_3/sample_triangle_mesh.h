@@ -105,9 +105,10 @@ Triangle_sample<GeomTraits, Face> located_sample(const Triangle_fragment_traits_
 {
   typedef typename GeomTraits::FT FT;
   const auto n = traits.triangle_normal(s.face);
+  const auto w = traits.barycentric_coordinates(s);
   return Triangle_sample<GeomTraits, Face>{
       typename GeomTraits::Point_3(s.point[0], s.point[1], s.point[2]), face_of(s.face),
-      std::array<FT, 3>{{FT(1 - s.u - s.v), FT(s.u), FT(s.v)}}, typename GeomTraits::Vector_3(n[0], n[1], n[2])};
+      std::array<FT, 3>{{FT(w[0]), FT(w[1]), FT(w[2])}}, typename GeomTraits::Vector_3(n[0], n[1], n[2])};
 }
 
 } // namespace internal

@@ -7,6 +7,7 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
+#include <algorithm>
 #include <array>
 #include <iterator>
 #include <vector>
@@ -25,12 +26,17 @@ struct Certificate
 
 /// Proves that every point of the surface lies within distance D of some sample, or measures where
 /// it fails. Each root fragment is split with the model's own `split` until one sample's ball covers
-/// each piece (the model's conservative `is_covered`). A piece whose reference point is farther than
-/// D from every sample (decided exactly) is uncovered for sure: it is refined only down to
-/// `leaf_area` and counted. A piece still undecided at `max_depth` is counted too.
+/// each piece (the model's conservative `is_covered`).
+///
+/// The work is bounded. A piece whose reference point is farther than D from every sample (decided
+/// exactly) is a proven gap: it is refined only down to `leaf_area` for the area estimate. Pieces
+/// still undecided below D^2 / 2^24 are deferred: in a maximal set they are the few that sit where two
+/// ball boundaries cross close to a piece's edge, and they are refined breadth-first down to
+/// `max_depth`, until a gap is proven or a budget is spent. Around a real gap, many pieces straddle its
+/// boundary; refining all of them depth-first would take time exponential in the depth.
 template <class Traits>
 Certificate certify_coverage(const Traits& traits, const Point_hash_grid& samples, double d,
-                             int max_depth = 48)
+                             int max_depth = 48, std::size_t budget = 10000000)
 {
   typedef typename Traits::Fragment Fragment;
   struct Item
@@ -44,55 +50,74 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   double total_area = 0;
   for(const Fragment& f : roots) total_area += traits.area(f);
   const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
+  const double defer_area = d * d * 0x1.0p-24;
 
   Certificate result;
-  std::vector<Item> stack;
   std::vector<Fragment> children;
   std::vector<const double*> near;
   const double d2_near = d * d * (1 + 1e-9);
+
+  enum Verdict { COVERED, GAP_LEAF, SPLIT };
+  // decides one piece; records a proven gap
+  auto decide = [&](const Item& item) {
+    const std::array<double, 3> ref = traits.reference_point(item.fragment);
+    near.clear();
+    bool ref_covered = false;
+    samples.for_each_near(ref.data(), d, [&](Point_hash_grid::Index, const double* q) {
+      const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
+      if(dx * dx + dy * dy + dz * dz > d2_near) return;
+      near.push_back(q);
+      if(!ref_covered && compare_distance_exact(ref.data(), q, d) != CGAL::LARGER) ref_covered = true;
+    });
+    for(const double* q : near)
+      if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) return COVERED;
+    if(ref_covered) return SPLIT;
+    result.maximal = false;
+    if(!result.has_witness) {
+      result.has_witness = true;
+      result.witness = ref;
+    }
+    return traits.area(item.fragment) <= leaf_area ? GAP_LEAF : SPLIT;
+  };
+  auto split = [&](const Item& item, std::vector<Item>& out) {
+    children.clear();
+    traits.split(item.fragment, std::back_inserter(children));
+    for(const Fragment& c : children) out.push_back(Item{c, item.depth + 1});
+  };
+
+  std::vector<Item> stack, deferred;
   for(const Fragment& root : roots) {
     if(!(traits.area(root) > 0)) continue;
     stack.push_back(Item{root, 0});
     while(!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();
-      const std::array<double, 3> ref = traits.reference_point(item.fragment);
-      near.clear();
-      bool ref_covered = false;
-      samples.for_each_near(ref.data(), d, [&](Point_hash_grid::Index, const double* q) {
-        const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
-        if(dx * dx + dy * dy + dz * dz > d2_near) return;
-        near.push_back(q);
-        if(!ref_covered && compare_distance_exact(ref.data(), q, d) != CGAL::LARGER) ref_covered = true;
-      });
-      bool covered = false;
-      for(const double* q : near)
-        if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) {
-          covered = true;
-          break;
-        }
-      if(covered) continue;
+      const Verdict v = decide(item);
+      if(v == COVERED) continue;
       const double area = traits.area(item.fragment);
-      if(!ref_covered) {
-        result.maximal = false;
-        if(!result.has_witness) {
-          result.has_witness = true;
-          result.witness = ref;
-        }
-        if(area <= leaf_area) {
-          result.uncovered_area += area;
-          continue;
-        }
-      }
-      if(item.depth >= max_depth) {
-        result.maximal = false;
-        result.uncovered_area += area;
-        continue;
-      }
-      children.clear();
-      traits.split(item.fragment, std::back_inserter(children));
-      for(const Fragment& c : children) stack.push_back(Item{c, item.depth + 1});
+      if(v == GAP_LEAF) result.uncovered_area += area;
+      else if(area <= defer_area || item.depth >= max_depth) deferred.push_back(item);
+      else split(item, stack);
     }
+  }
+
+  std::size_t spent = 0;
+  std::vector<Item> next;
+  while(!deferred.empty() && !result.has_witness && spent < budget) {
+    next.clear();
+    for(const Item& item : deferred) {
+      ++spent;
+      const Verdict v = decide(item);
+      if(v == COVERED) continue;
+      if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) next.push_back(item);
+      else split(item, next);
+    }
+    deferred.swap(next);
+    if(std::all_of(deferred.begin(), deferred.end(), [&](const Item& i) { return i.depth >= max_depth; })) break;
+  }
+  for(const Item& item : deferred) {
+    result.maximal = false;
+    result.uncovered_area += traits.area(item.fragment);
   }
   return result;
 }

@@ -1,0 +1,72 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+/// \ingroup PkgPoissonDiskSampling3Concepts
+/// \cgalConcept
+///
+/// What the dart-throwing engine needs from a surface: the five operations of the paper's Section 3
+/// (fragments, their areas, a uniform point on a fragment, a coverage test, a split into children),
+/// plus a reference point and a rounding-error bound. The engine computes in double precision with
+/// points as `std::array<double, 3>`; exactness is obtained from conservative coverage tests and exact
+/// distance decisions, see the design page.
+///
+/// Requirements the engine relies on:
+/// - the initial fragments tile the surface, and the children of a fragment tile it;
+/// - `random_sample()` is uniform with respect to area on the fragment (or, for models that sample
+///   with rejection, uniform once accepted, and accepted with positive probability);
+/// - `is_covered()` is conservative: it returns `true` only if every point of the fragment is within
+///   `radius` of `center`, rounding included;
+/// - splitting shrinks fragments, so that a fragment smaller than a ball's margin is covered by it.
+///
+/// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Triangle_fragment_traits_3`
+/// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Sphere_fragment_traits_3`
+class SurfaceFragmentTraits_3
+{
+public:
+  /// \name Types
+  /// @{
+
+  /// a piece of the surface; copied often, so keep it small
+  typedef unspecified_type Fragment;
+
+  /// what is produced for an accepted dart: its point and where it lies on the surface
+  typedef unspecified_type Sample;
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /// writes the initial fragments (paper requirement 1)
+  template <class OutputIterator>
+  OutputIterator initial_fragments(OutputIterator out) const;
+
+  /// the area of a fragment, or an upper bound of it for models that sample with rejection; the engine
+  /// chooses fragments in proportion to it (requirement 2)
+  double area(const Fragment& f) const;
+
+  /// a point uniformly distributed on `f`, or an empty optional if a rejection step refuses the dart,
+  /// in which case the engine puts `f` back unchanged (requirement 3). Models that need a projection to
+  /// the surface do it here. `rng.uniform()` returns a double uniform in [0, 1).
+  template <class RandomGenerator>
+  std::optional<Sample> random_sample(const Fragment& f, RandomGenerator& rng) const;
+
+  /// the point of a sample
+  const std::array<double, 3>& point(const Sample& s) const;
+
+  /// true only if every point of `f` is within `radius` of `center` (requirement 4); conservative
+  bool is_covered(const Fragment& f, const std::array<double, 3>& center, double radius) const;
+
+  /// writes the children of `f`, which tile it (requirement 5)
+  template <class OutputIterator>
+  OutputIterator split(const Fragment& f, OutputIterator children) const;
+
+  /// a point of the surface in `f`, used by the maximality certificate to find the samples near `f`
+  std::array<double, 3> reference_point(const Fragment& f) const;
+
+  /// a bound on the distance between a computed point of the surface and the exact one; the engine
+  /// refuses minimum distances below 2^20 times this bound
+  double position_error() const;
+
+  /// @}
+};

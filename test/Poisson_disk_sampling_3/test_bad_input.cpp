@@ -1,0 +1,162 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Bad input gets its documented exception: never a crash, a hang or silent garbage.
+
+#include "test_support.h"
+
+#include <chrono>
+#include <limits>
+
+namespace {
+
+const double nan = std::numeric_limits<double>::quiet_NaN();
+const double inf = std::numeric_limits<double>::infinity();
+
+Mesh triangle()
+{
+  Mesh m;
+  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)), m.add_vertex(Point(0, 1, 0)));
+  return m;
+}
+
+template <class NP>
+void sample(const Mesh& m, const NP& np)
+{
+  std::vector<Point> out;
+  PDS::sample_triangle_mesh(m, std::back_inserter(out), np);
+}
+
+TEST(BadInput, EmptyMesh)
+{
+  EXPECT_THROW(sample(Mesh(), PDS::parameters::radius(0.1)), PDS::Invalid_input);
+}
+
+TEST(BadInput, MeshOfZeroArea)
+{
+  Mesh m;
+  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)), m.add_vertex(Point(2, 0, 0)));
+  EXPECT_THROW(sample(m, PDS::parameters::radius(0.1)), PDS::Invalid_input);
+}
+
+TEST(BadInput, NonFiniteCoordinates)
+{
+  for(double bad : {nan, inf, -inf}) {
+    Mesh m = triangle();
+    m.point(*m.vertices().begin()) = Point(bad, 0, 0);
+    EXPECT_THROW(sample(m, PDS::parameters::radius(0.1)), PDS::Invalid_input);
+  }
+  EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{Point(nan, 0, 0)}, 1.), PDS::Invalid_input);
+  std::vector<Point> out;
+  EXPECT_THROW(PDS::sample_sphere(K::Sphere_3(Point(0, inf, 0), 1), std::back_inserter(out),
+                                  PDS::parameters::radius(0.1)),
+               PDS::Invalid_input);
+}
+
+TEST(BadInput, BadSizes)
+{
+  const Mesh m = triangle();
+  for(double r : {0., -1., nan, inf}) {
+    EXPECT_THROW(sample(m, PDS::parameters::radius(r)), PDS::Invalid_input) << r;
+    EXPECT_THROW(sample(m, PDS::parameters::minimum_distance(r)), PDS::Invalid_input) << r;
+    EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>(), r), PDS::Invalid_input) << r;
+    EXPECT_THROW(PDS::is_maximal(m, std::vector<Point>(), r), PDS::Invalid_input) << r;
+  }
+  EXPECT_THROW(sample(m, PDS::parameters::number_of_points(0)), PDS::Invalid_input);
+  EXPECT_THROW(sample(m, CGAL::parameters::default_values()), PDS::Invalid_input) << "no size";
+  EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).minimum_distance(0.2)), PDS::Invalid_input) << "two sizes";
+  EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).number_of_points(10)), PDS::Invalid_input) << "two sizes";
+}
+
+TEST(BadInput, TooManyPointsIsRefusedBeforeAllocating)
+{
+  const Mesh m = triangle(); // area 0.5
+  const auto start = std::chrono::steady_clock::now();
+  // area / (pi r^2) = 1.6e13 points: refused at once, not after filling memory
+  EXPECT_THROW(sample(m, PDS::parameters::radius(1e-7)), PDS::Point_limit_exceeded);
+  EXPECT_THROW(sample(m, PDS::parameters::radius(0.01).maximum_number_of_points(100)), PDS::Point_limit_exceeded);
+  EXPECT_THROW(sample(m, PDS::parameters::number_of_points(200000000)), PDS::Point_limit_exceeded);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.)
+      << "refusals must not do the work first";
+  // within the bound it works
+  std::vector<Point> out;
+  PDS::sample_triangle_mesh(m, std::back_inserter(out), PDS::parameters::radius(0.05).maximum_number_of_points(100));
+  EXPECT_GT(out.size(), 10u);
+}
+
+// Many tiny separate triangles each need their own sample, beyond what the area predicts: the bound
+// also holds while sampling.
+TEST(BadInput, BoundHoldsWhileSampling)
+{
+  std::vector<Point> p;
+  std::vector<std::array<std::size_t, 3>> t;
+  for(std::size_t i = 0; i < 1000; ++i) {
+    const double x = 10. * double(i);
+    p.insert(p.end(), {Point(x, 0, 0), Point(x + 1e-3, 0, 0), Point(x, 1e-3, 0)});
+    t.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  std::vector<Point> out;
+  EXPECT_THROW(PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                                        PDS::parameters::minimum_distance(1.).maximum_number_of_points(500)),
+               PDS::Point_limit_exceeded);
+  out.clear();
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(1.));
+  EXPECT_EQ(out.size(), 1000u);
+}
+
+TEST(BadInput, RadiusBelowCoordinatePrecision)
+{
+  Mesh m;
+  m.add_face(m.add_vertex(Point(1e9, 0, 0)), m.add_vertex(Point(1e9 + 1, 0, 0)), m.add_vertex(Point(1e9, 1, 0)));
+  EXPECT_THROW(sample(m, PDS::parameters::radius(1e-4).maximum_number_of_points(1000000000)), PDS::Invalid_input);
+}
+
+TEST(BadInput, NonTriangleFaces)
+{
+  const Mesh m = load_mesh("cube_poly.off"); // quadrilaterals from CGAL's data set
+  try {
+    sample(m, PDS::parameters::radius(0.1));
+    FAIL() << "no exception";
+  } catch(const PDS::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("not a triangle"), std::string::npos) << e.what();
+  }
+  const std::vector<Point> p{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<Point> out;
+  EXPECT_THROW(PDS::sample_polygon_soup(p, std::vector<std::vector<int>>{{0, 1, 2, 3}}, std::back_inserter(out),
+                                        PDS::parameters::radius(0.1)),
+               PDS::Invalid_input);
+  EXPECT_THROW(PDS::sample_polygon_soup(p, std::vector<std::vector<int>>{{0, 1, 7}}, std::back_inserter(out),
+                                        PDS::parameters::radius(0.1)),
+               PDS::Invalid_input)
+      << "index out of range";
+  EXPECT_THROW(PDS::sample_polygon_soup(p, std::vector<std::vector<int>>{}, std::back_inserter(out),
+                                        PDS::parameters::radius(0.1)),
+               PDS::Invalid_input)
+      << "no polygons";
+}
+
+// (a negative or NaN squared radius is already refused by CGAL::Sphere_3's own precondition)
+TEST(BadInput, BadSpheres)
+{
+  std::vector<Point> out;
+  for(double sq : {0., inf})
+    EXPECT_THROW(PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, sq), std::back_inserter(out), PDS::parameters::radius(0.1)),
+                 PDS::Invalid_input);
+}
+
+TEST(BadInput, UnreachableCount)
+{
+  // 200 far-apart tiny triangles: each has its own sample whatever the distance, so 50 is impossible
+  std::vector<Point> p;
+  std::vector<std::array<std::size_t, 3>> t;
+  for(std::size_t i = 0; i < 200; ++i) {
+    const double x = 1000. * double(i);
+    p.insert(p.end(), {Point(x, 0, 0), Point(x + 1e-3, 0, 0), Point(x, 1e-3, 0)});
+    t.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  std::vector<Point> out;
+  EXPECT_THROW(PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50)),
+               PDS::Target_not_reached);
+}
+
+} // namespace

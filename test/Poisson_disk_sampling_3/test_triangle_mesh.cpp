@@ -1,0 +1,189 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Sampling triangle meshes from CGAL's data set: exact minimum distance, maximality certificate,
+// reproducibility, agreement between mesh types and soups, density, number_of_points, locations.
+
+#include "test_support.h"
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+
+#include <cmath>
+#include <tuple>
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+struct Case
+{
+  const char* mesh;
+  double points; // about how many points to ask for
+  unsigned seed;
+};
+
+class MeshSampling : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MeshSampling, IsMaximalPoissonDiskSet)
+{
+  const Case c = GetParam();
+  const Mesh m = load_mesh(c.mesh);
+  const double d = distance_for(PMP::area(m), c.points);
+  std::vector<Point> points;
+  PDS::Sampling_statistics stats;
+  PDS::sample_triangle_mesh(m, std::back_inserter(points),
+                            PDS::parameters::minimum_distance(d).random_seed(c.seed).statistics(std::ref(stats)));
+  EXPECT_GT(points.size(), 0.5 * c.points);
+  EXPECT_LT(points.size(), 2.0 * c.points);
+  EXPECT_EQ(stats.dropped_fragments, 0u);
+  EXPECT_EQ(stats.minimum_distance, d);
+  expect_maximal_poisson_disk_set(m, points, d);
+}
+
+// lion and fandisk have sharp features, elephant-with-holes and mesh_with_border have borders,
+// blobby_3cc has three components
+INSTANTIATE_TEST_SUITE_P(CgalData, MeshSampling,
+                         ::testing::Values(Case{"lion.off", 2000, 1}, Case{"lion.off", 20000, 2},
+                                           Case{"elephant.off", 5000, 3}, Case{"bunny00.off", 3000, 4},
+                                           Case{"bunny00.off", 30000, 5}, Case{"fandisk.off", 8000, 6},
+                                           Case{"elephant-with-holes.off", 4000, 7},
+                                           Case{"mesh_with_border.off", 3000, 8}, Case{"blobby_3cc.off", 2500, 9},
+                                           Case{"armadillo.off", 10000, 10}, Case{"knot1.off", 500, 11}),
+                         [](const ::testing::TestParamInfo<Case>& i) {
+                           std::string n = i.param.mesh;
+                           for(char& ch : n) if(!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return n + "_" + std::to_string(int(i.param.points));
+                         });
+
+// the radius is half the minimum distance
+TEST(MeshSampling, RadiusIsHalfTheMinimumDistance)
+{
+  const Mesh m = load_mesh("elephant.off");
+  std::vector<Point> by_radius, by_distance;
+  PDS::sample_triangle_mesh(m, std::back_inserter(by_radius), PDS::parameters::radius(0.01));
+  PDS::sample_triangle_mesh(m, std::back_inserter(by_distance), PDS::parameters::minimum_distance(0.02));
+  EXPECT_EQ(by_radius, by_distance);
+  expect_maximal_poisson_disk_set(m, by_radius, 0.02);
+}
+
+TEST(MeshSampling, SameSeedSamePointsWhateverRanBefore)
+{
+  const Mesh m = load_mesh("bunny00.off");
+  const auto np = PDS::parameters::minimum_distance(0.03).random_seed(42);
+  std::vector<Point> a, b, c, other;
+  PDS::sample_triangle_mesh(m, std::back_inserter(a), np);
+  PDS::sample_triangle_mesh(m, std::back_inserter(other), PDS::parameters::minimum_distance(0.03).random_seed(43));
+  CGAL::get_default_random() = CGAL::Random(123); // global state must not matter
+  std::srand(99);
+  PDS::sample_triangle_mesh(m, std::back_inserter(b), np);
+  PDS::sample_triangle_mesh(m, std::back_inserter(c), np);
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a, c);
+  EXPECT_NE(a, other);
+}
+
+TEST(MeshSampling, SurfaceMeshPolyhedronAndSoupAgree)
+{
+  const Mesh sm = load_mesh("lion.off");
+  const auto poly = load_mesh<CGAL::Polyhedron_3<K>>("lion.off");
+  std::vector<Point> soup_points;
+  std::vector<std::vector<std::size_t>> soup_faces;
+  PMP::polygon_mesh_to_polygon_soup(sm, soup_points, soup_faces);
+
+  const auto np = PDS::parameters::minimum_distance(0.02).random_seed(5);
+  std::vector<Point> a, b, c;
+  PDS::sample_triangle_mesh(sm, std::back_inserter(a), np);
+  PDS::sample_triangle_mesh(poly, std::back_inserter(b), np);
+  PDS::sample_polygon_soup(soup_points, soup_faces, std::back_inserter(c), np);
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a, c);
+  EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(soup_points, soup_faces, c, 0.02));
+  EXPECT_TRUE(PDS::is_maximal(poly, b, 0.02));
+}
+
+// A maximal set with minimum distance d has about area / (c d^2) points, c near 1/0.6965 for
+// the plane: halving d multiplies the count by about 4 (boundaries and curvature add a little).
+TEST(MeshSampling, CountGrowsAsAreaOverSquaredDistance)
+{
+  for(const char* name : {"elephant.off", "fandisk.off"}) {
+    const Mesh m = load_mesh(name);
+    const double area = PMP::area(m);
+    std::vector<double> density;
+    for(double d : {0.04, 0.02, 0.01}) {
+      std::vector<Point> points;
+      PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+      density.push_back(double(points.size()) * d * d / area);
+    }
+    for(double rho : density) {
+      EXPECT_GT(rho, 0.6) << name;
+      EXPECT_LT(rho, 0.85) << name;
+    }
+    EXPECT_NEAR(density[2], density[1], 0.05 * density[1]) << name;
+  }
+}
+
+TEST(MeshSampling, NumberOfPointsIsMetWithinOnePercent)
+{
+  for(const auto& [name, n] : {std::make_tuple("lion.off", 10000), std::make_tuple("elephant-with-holes.off", 777),
+                               std::make_tuple("blobby_3cc.off", 3000)}) {
+    const Mesh m = load_mesh(name);
+    std::vector<Point> points;
+    PDS::Sampling_statistics stats;
+    PDS::sample_triangle_mesh(m, std::back_inserter(points),
+                              PDS::parameters::number_of_points(n).statistics(std::ref(stats)));
+    EXPECT_LE(std::abs(double(points.size()) - n), 0.01 * n) << name << ": " << points.size();
+    EXPECT_GE(stats.number_of_runs, 1u);
+    EXPECT_LE(stats.number_of_runs, 6u);
+    expect_maximal_poisson_disk_set(m, points, stats.minimum_distance);
+  }
+}
+
+TEST(MeshSampling, LocationsRebuildTheSamples)
+{
+  const Mesh m = load_mesh("fandisk.off");
+  typedef PDS::Triangle_sample<K, Mesh::Face_index> Sample;
+  std::vector<Sample> samples;
+  std::vector<Point> points;
+  const auto np = PDS::parameters::minimum_distance(0.03).random_seed(9);
+  PDS::sample_triangle_mesh_with_locations(m, std::back_inserter(samples), np);
+  PDS::sample_triangle_mesh(m, std::back_inserter(points), np);
+  ASSERT_EQ(samples.size(), points.size());
+  for(std::size_t i = 0; i < samples.size(); ++i) {
+    const Sample& s = samples[i];
+    EXPECT_EQ(s.point, points[i]);
+    const auto& w = s.barycentric_coordinates;
+    for(double c : w) {
+      EXPECT_GE(c, -1e-15);
+      EXPECT_LE(c, 1 + 1e-15);
+    }
+    EXPECT_NEAR(w[0] + w[1] + w[2], 1., 1e-15);
+    const Point q = PMP::construct_point(std::make_pair(s.face, w), m);
+    EXPECT_LT(CGAL::squared_distance(q, s.point), 1e-24);
+    EXPECT_NEAR(s.normal.squared_length(), 1., 1e-12);
+    const auto n = PMP::compute_face_normal(s.face, m);
+    EXPECT_GT(n * s.normal, 1 - 1e-9);
+  }
+}
+
+// two triangles sharing only a vertex, three sharing one edge (non-manifold), a zero-area triangle
+TEST(MeshSampling, MessySoupIsCoveredAndDegenerateFacesSkipped)
+{
+  const std::vector<Point> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0.5}, {-1, -1, -1},
+                             {-1, 0, 0}, {2, 0, 0}};
+  const std::vector<std::array<int, 3>> t{{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 5, 6}, {0, 1, 7}};
+  std::vector<PDS::Triangle_sample<K, std::size_t>> samples;
+  PDS::sample_polygon_soup_with_locations(p, t, std::back_inserter(samples), PDS::parameters::minimum_distance(0.05));
+  std::vector<Point> points;
+  for(const auto& s : samples) {
+    EXPECT_NE(s.face, 4u) << "a sample on the zero-area triangle";
+    points.push_back(s.point);
+  }
+  EXPECT_TRUE(PDS::is_poisson_disk_set(points, 0.05));
+  EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, points, 0.05));
+}
+
+} // namespace

@@ -1,0 +1,101 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The validation functions themselves: exact decisions at the threshold, offending pairs, and a
+// maximality certificate that fails where a sample is missing and says where.
+
+#include "test_support.h"
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+TEST(IsPoissonDiskSet, DecidesExactlyAtTheThreshold)
+{
+  // 0.1 + 0.2 is not 0.3 in double: the pair's distance is a hair above or below the threshold
+  const double a = 0.1, b = 0.2;
+  const double d = (a + b) - a; // rounded; the exact distance of the pair below is b
+  std::vector<Point> pair{Point(a, 0, 0), Point(a + b, 0, 0)};
+  const double exact = CGAL::to_double((CGAL::Exact_rational(a + b) - CGAL::Exact_rational(a)));
+  EXPECT_EQ(bool(PDS::is_poisson_disk_set(pair, exact)), true) << "distance equal to d is allowed";
+  EXPECT_EQ(bool(PDS::is_poisson_disk_set(pair, std::nextafter(exact, 1.))), false) << "one ulp more is not";
+  EXPECT_EQ(bool(PDS::is_poisson_disk_set(pair, std::nextafter(exact, 0.))), true);
+  (void)d;
+  // in 3D, with a squared distance that double arithmetic rounds to the threshold
+  const Point p(1e8, 0, 0), q(1e8 + 3, 4, 0); // distance exactly 5
+  std::vector<Point> pq{p, q};
+  EXPECT_TRUE(PDS::is_poisson_disk_set(pq, 5.));
+  EXPECT_FALSE(PDS::is_poisson_disk_set(pq, std::nextafter(5., 6.)));
+}
+
+TEST(IsPoissonDiskSet, NamesTheOffendingPair)
+{
+  std::vector<Point> points;
+  for(int i = 0; i < 100; ++i) points.emplace_back(i, 0, 0);
+  EXPECT_TRUE(PDS::is_poisson_disk_set(points, 1.));
+  points.emplace_back(57.5, 0.1, 0);
+  const PDS::Poisson_disk_check c = PDS::is_poisson_disk_set(points, 1.);
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.second, 100u);
+  EXPECT_TRUE(c.first == 57u || c.first == 58u);
+  // a duplicate is a violation for any distance
+  EXPECT_FALSE(PDS::is_poisson_disk_set(std::vector<Point>{points[3], points[3]}, 1e-12));
+  // a distance so small that grid cells cannot be indexed is refused, not mishandled
+  EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{points[3], points[3]}, 1e-300), PDS::Invalid_input);
+}
+
+TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)
+{
+  const Mesh m = load_mesh("elephant.off");
+  const double d = 0.03;
+  std::vector<Point> points;
+  PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+  ASSERT_TRUE(PDS::is_maximal(m, points, d));
+  // Remove samples until a hole opens (a single removal can be covered by its neighbours).
+  std::size_t removed = 0;
+  PDS::Maximality_check<Point> check;
+  while((check = PDS::is_maximal(m, points, d))) {
+    points.erase(points.begin() + std::ptrdiff_t(points.size() / 2));
+    ++removed;
+    ASSERT_LT(removed, 20u);
+  }
+  EXPECT_GT(check.uncovered_area, 0);
+  ASSERT_TRUE(check.uncovered_point.has_value());
+  for(const Point& p : points) EXPECT_GT(CGAL::squared_distance(p, *check.uncovered_point), d * d);
+  // the hole is about one disk, not the whole surface
+  EXPECT_LT(check.uncovered_area, 0.1 * CGAL::Polygon_mesh_processing::area(m));
+}
+
+TEST(IsMaximal, EmptySetOnASphereIsNotMaximal)
+{
+  const K::Sphere_3 sphere(CGAL::ORIGIN, 1);
+  const auto check = PDS::is_maximal(sphere, std::vector<Point>(), 0.1);
+  EXPECT_FALSE(check);
+  EXPECT_NEAR(check.uncovered_area, 4 * 3.14159265358979323846, 1e-9);
+}
+
+TEST(IsMaximal, SparseSetOnASphereIsNotMaximalButDenseOneIs)
+{
+  const K::Sphere_3 sphere(CGAL::ORIGIN, 1);
+  std::vector<Point> points;
+  PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(0.2));
+  EXPECT_TRUE(PDS::is_maximal(sphere, points, 0.2));
+  EXPECT_FALSE(PDS::is_maximal(sphere, points, 0.1)) << "too sparse for a smaller distance";
+}
+
+TEST(IsMaximal, SingleTriangleWithItsCornersIsMaximalForALargeDistance)
+{
+  const std::vector<Point> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<std::array<int, 3>> t{{0, 1, 2}};
+  // the circumcentre (0.5, 0.5) is at distance sqrt(0.5) from the three corners: covered iff d >= that
+  const double c = std::sqrt(0.5);
+  EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, p, c * (1 + 1e-6)));
+  const auto check = PDS::is_maximal_on_polygon_soup(p, t, p, c * (1 - 1e-6));
+  EXPECT_FALSE(check);
+  EXPECT_LT(check.uncovered_area, 1e-3);
+}
+
+} // namespace
