@@ -4,6 +4,8 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_POINT_HASH_GRID_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_POINT_HASH_GRID_H
 
+#include <CGAL/Poisson_disk_sampling_3/internal/Cell_hash_table.h>
+
 #include <CGAL/assertions.h>
 
 #include <cmath>
@@ -23,14 +25,11 @@ public:
   typedef std::uint32_t Index;
   static constexpr Index none = Index(-1);
 
-  /// `cell_size` > 0; callers make sure |coordinate| / cell_size stays below 2^62.
+  /// `cell_size` > 0. \throws Invalid_input (from `grid_cell()`) if |coordinate| / cell_size reaches 2^62
   explicit Point_hash_grid(double cell_size, std::size_t expected_points = 0)
-    : inv_cell_(1. / cell_size)
+    : inv_cell_(1. / cell_size), cells_(expected_points / 2)
   {
     CGAL_precondition(cell_size > 0);
-    std::size_t capacity = 16;
-    while(capacity < expected_points) capacity *= 2; // about four times the number of cells used
-    slots_.assign(capacity, Slot());
     points_.reserve(3 * expected_points);
     next_.reserve(expected_points);
   }
@@ -42,9 +41,10 @@ public:
   {
     const Index i = Index(next_.size());
     points_.insert(points_.end(), p, p + 3);
-    Slot& s = find_or_create(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]));
-    next_.push_back(s.head);
-    s.head = i;
+    // a new cell gets i as its head; an old one gets i in front of its list
+    std::uint32_t& head = cells_.find_or_insert(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]), i);
+    next_.push_back(head == i ? none : head);
+    head = i;
     return i;
   }
 
@@ -73,68 +73,15 @@ public:
     for(std::int64_t x = x0; x <= x1; ++x)
       for(std::int64_t y = y0; y <= y1; ++y)
         for(std::int64_t z = z0; z <= z1; ++z)
-          for(Index i = head(x, y, z); i != none; i = next_[i])
+          for(Index i = cells_.find(x, y, z); i != none; i = next_[i])
             f(i, point(i));
   }
 
 private:
-  struct Slot
-  {
-    std::int64_t x = 0, y = 0, z = 0;
-    Index head = none;
-  };
-
-  std::int64_t cell_of(double c) const { return std::int64_t(std::floor(c * inv_cell_)); }
-
-  static std::size_t hash(std::int64_t x, std::int64_t y, std::int64_t z)
-  {
-    std::uint64_t h = std::uint64_t(x) * 0x9E3779B97F4A7C15ull;
-    h ^= std::uint64_t(y) * 0xC2B2AE3D27D4EB4Full;
-    h ^= std::uint64_t(z) * 0x165667B19E3779F9ull;
-    return std::size_t(h ^ (h >> 29));
-  }
-
-  Index head(std::int64_t x, std::int64_t y, std::int64_t z) const
-  {
-    const std::size_t mask = slots_.size() - 1;
-    for(std::size_t k = hash(x, y, z) & mask;; k = (k + 1) & mask) {
-      const Slot& s = slots_[k];
-      if(s.head == none) return none;
-      if(s.x == x && s.y == y && s.z == z) return s.head;
-    }
-  }
-
-  Slot& find_or_create(std::int64_t x, std::int64_t y, std::int64_t z)
-  {
-    if(2 * (used_ + 1) > slots_.size()) grow();
-    const std::size_t mask = slots_.size() - 1;
-    for(std::size_t k = hash(x, y, z) & mask;; k = (k + 1) & mask) {
-      Slot& s = slots_[k];
-      if(s.head == none) {
-        s.x = x; s.y = y; s.z = z;
-        ++used_;
-        return s;
-      }
-      if(s.x == x && s.y == y && s.z == z) return s;
-    }
-  }
-
-  void grow()
-  {
-    std::vector<Slot> old(2 * slots_.size());
-    old.swap(slots_);
-    const std::size_t mask = slots_.size() - 1;
-    for(const Slot& s : old) {
-      if(s.head == none) continue;
-      std::size_t k = hash(s.x, s.y, s.z) & mask;
-      while(slots_[k].head != none) k = (k + 1) & mask;
-      slots_[k] = s;
-    }
-  }
+  std::int64_t cell_of(double c) const { return grid_cell(c, inv_cell_); }
 
   double inv_cell_;
-  std::vector<Slot> slots_;
-  std::size_t used_ = 0;
+  Cell_hash_table cells_;
   std::vector<double> points_;
   std::vector<Index> next_;
 };
