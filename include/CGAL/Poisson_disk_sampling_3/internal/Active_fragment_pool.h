@@ -8,6 +8,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -39,9 +40,13 @@ public:
   {
     CGAL_precondition(area > 0);
     const std::size_t b = bin_of(area);
-    if(b >= bins_.size()) bins_.resize(b + 1);
+    while(b >= bins_.size()) {
+      bounds_.push_back(bin_bound(bins_.size()));
+      bins_.emplace_back();
+    }
     bins_[b].push_back(Entry{item, area});
     if(size_ == 0 || b < first_) first_ = b;
+    if(size_ == 0 || b > last_) last_ = b;
     ++size_;
   }
 
@@ -50,22 +55,22 @@ public:
   {
     CGAL_precondition(!empty());
     while(bins_[first_].empty()) ++first_;
+    while(bins_[last_].empty()) --last_;
     for(;;) {
-      // weights relative to bin `first_`, so that deep bins do not underflow
+      // weights relative to bin `first_`: count * 2^-(b - first_), exact for each bin
       double total = 0;
-      for(std::size_t b = first_; b < bins_.size(); ++b)
-        total += double(bins_[b].size()) * std::ldexp(1., -int(b - first_));
+      for(std::size_t b = first_; b <= last_; ++b) total += weight(b);
       double u = rng.uniform() * total;
       std::size_t b = first_;
-      for(; b + 1 < bins_.size(); ++b) {
-        const double w = double(bins_[b].size()) * std::ldexp(1., -int(b - first_));
+      for(; b < last_; ++b) {
+        const double w = weight(b);
         if(u < w) break;
         u -= w;
       }
       while(bins_[b].empty()) --b; // rounding at the end of the walk
       std::vector<Entry>& bin = bins_[b];
       const std::size_t k = std::size_t(rng.uniform_index(bin.size()));
-      if(rng.uniform() * bin_bound(b) >= bin[k].area) continue;
+      if(rng.uniform() * bounds_[b] >= bin[k].area) continue;
       const Item item = bin[k].item;
       bin[k] = bin.back();
       bin.pop_back();
@@ -81,6 +86,19 @@ private:
     double area;
   };
 
+  // count_b * 2^-(b - first_); a table spares the ldexp call for the bins in use
+  double weight(std::size_t b) const
+  {
+    static const std::array<double, 64> power_of_half = [] {
+      std::array<double, 64> t{};
+      for(std::size_t i = 0; i < t.size(); ++i) t[i] = std::ldexp(1., -int(i));
+      return t;
+    }();
+    const std::size_t k = b - first_;
+    const double count = double(bins_[b].size());
+    return k < power_of_half.size() ? count * power_of_half[k] : std::ldexp(count, -int(k));
+  }
+
   double bin_bound(std::size_t b) const { return std::ldexp(max_area_, -int(b)); }
 
   std::size_t bin_of(double area) const
@@ -95,7 +113,8 @@ private:
 
   double max_area_;
   std::vector<std::vector<Entry>> bins_;
-  std::size_t first_ = 0;
+  std::vector<double> bounds_; // bin_bound(b), so that a pick calls no ldexp
+  std::size_t first_ = 0, last_ = 0; // the non-empty bins are among [first_, last_]
   std::size_t size_ = 0;
 };
 
