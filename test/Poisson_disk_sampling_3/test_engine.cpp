@@ -7,13 +7,18 @@
 #include <CGAL/Poisson_disk_sampling_3/is_poisson_disk_set.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Active_fragment_pool.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Coverage_certifier.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Neighbor_buckets.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
+#include <CGAL/Poisson_disk_sampling_3/Triangle_fragment_traits_3.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_surface.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -67,6 +72,22 @@ TEST(ActiveFragmentPool, PicksInProportionToArea)
   EXPECT_EQ(pool.size(), areas.size());
 }
 
+// Fragments 80 and 100 bins below the largest (a deep split of a small face next to a large face):
+// every fragment comes out, the large one first (the others weigh 2^-80 of it).
+TEST(ActiveFragmentPool, ReachesBinsFarBelowTheFirst)
+{
+  PDS::internal::Active_fragment_pool<int> pool(1.0);
+  pool.push(0, 1.0);
+  pool.push(1, std::ldexp(1., -80));
+  pool.push(2, std::ldexp(0.75, -100));
+  Random rng(3);
+  EXPECT_EQ(pool.pick_and_remove(rng), 0);
+  std::vector<int> rest{pool.pick_and_remove(rng), pool.pick_and_remove(rng)};
+  std::sort(rest.begin(), rest.end());
+  EXPECT_EQ(rest, (std::vector<int>{1, 2}));
+  EXPECT_TRUE(pool.empty());
+}
+
 // A flat unit square in the plane z = 0, split into four squares; optionally refusing half of its
 // darts, as a model that samples with rejection does.
 class Square_traits
@@ -107,6 +128,17 @@ public:
 private:
   bool refuse_half_;
 };
+
+// the point of a root triangle fragment at parameters (u, v), through the model's own operations:
+// the reference point (centroid) of a tiny fragment whose corner is (u, v)
+PDS::Triangle_fragment_traits_3::Point point_at(const PDS::Triangle_fragment_traits_3& traits,
+                                                PDS::Triangle_fragment_traits_3::Fragment f, double u, double v)
+{
+  f.u = u;
+  f.v = v;
+  f.level = 60;
+  return traits.reference_point(f);
+}
 
 std::vector<std::array<double, 3>> sample_square(const Square_traits& traits, double d, unsigned seed)
 {
@@ -154,6 +186,185 @@ TEST(Engine, FirstDartIsUniform)
   for(std::size_t i = 0; i < xs.size(); ++i)
     ks = std::max({ks, std::abs(xs[i] - double(i) / double(xs.size())), std::abs(xs[i] - double(i + 1) / double(xs.size()))});
   EXPECT_LT(ks, 1.95 / std::sqrt(double(xs.size())));
+}
+
+// The union-of-balls test of triangles: whenever it says covered, a dense evaluation of the triangle
+// finds no point farther than the radius from every centre; and it says covered for most triangles
+// that are covered with some room to spare, including many that no single ball covers.
+TEST(TriangleFragments, UnionCoverageIsConservativeAndUseful)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  Random rng(17);
+  int covered_with_room = 0, said_covered = 0, union_only = 0;
+  for(int trial = 0; trial < 3000; ++trial) {
+    Traits traits;
+    auto rnd = [&](double s) { return Traits::Point{{s * rng.uniform(), s * rng.uniform(), 0.3 * s * rng.uniform()}}; };
+    traits.add_triangle(rnd(1), rnd(1), rnd(1));
+    std::vector<Traits::Fragment> roots;
+    traits.initial_fragments(std::back_inserter(roots));
+    if(roots.empty()) continue;
+    const Traits::Fragment f = roots.front();
+    std::vector<std::array<double, 3>> centers;
+    const int k = 2 + int(rng.uniform_index(5));
+    for(int i = 0; i < k; ++i) {
+      auto c = rnd(1.4);
+      for(double& x : c) x -= 0.2;
+      centers.push_back(c);
+    }
+    const double radius = 0.35 + 0.4 * rng.uniform();
+    // the farthest any point of the triangle is from its nearest centre, on a dense barycentric grid
+    double worst = 0;
+    const int n = 120;
+    for(int i = 0; i <= n; ++i)
+      for(int j = 0; i + j <= n; ++j) {
+        const double u = double(i) / n, v = double(j) / n;
+        double best = 1e300;
+        const Traits::Point p = point_at(traits, f, u, v);
+        for(const auto& c : centers)
+          best = std::min(best, std::sqrt((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) +
+                                          (p[2] - c[2]) * (p[2] - c[2])));
+        worst = std::max(worst, best);
+      }
+    const bool says = traits.is_covered_by_union(f, centers, radius);
+    if(says) {
+      ++said_covered;
+      EXPECT_LE(worst, radius) << "trial " << trial;
+      bool single = false;
+      for(const auto& c : centers) single = single || traits.is_covered(f, c, radius);
+      if(!single) ++union_only;
+    }
+    if(worst < radius * 0.97) ++covered_with_room;
+  }
+  ASSERT_GT(covered_with_room, 100);
+  EXPECT_GT(said_covered, 0.9 * covered_with_room);
+  EXPECT_GT(union_only, 50);
+}
+
+// Three balls whose spheres pass at distance R (1 + delta) from a point O of a small triangle around
+// it: O is uncovered for every delta > 0, however small, so the answer must be false; rounding in
+// double alone would call the near misses covered. Slightly inside (delta < 0) it must say covered.
+// Far from the origin, with the centres off the triangle's plane, in several orientations.
+TEST(TriangleFragments, UnionCoverageIsExactAtAHoleOfAnySize)
+{
+  typedef PDS::internal::Triangle_in_ball_union Test;
+  typedef Test::Point P;
+  const double R = 0.75;
+  int holes = 0;
+  for(double offset : {0., 1000.}) {
+    for(double tilt : {0., 0.3, 1.1}) {
+      // an orthonormal frame (x, y) of a tilted plane, and its normal z
+      const P x{{std::cos(tilt), 0., std::sin(tilt)}}, y{{0., 1., 0.}}, z{{-std::sin(tilt), 0., std::cos(tilt)}};
+      const P origin{{offset + 0.1, offset - 0.2, offset + 0.3}};
+      auto at = [&](double a, double b, double c) {
+        return P{{origin[0] + a * x[0] + b * y[0] + c * z[0], origin[1] + a * x[1] + b * y[1] + c * z[1],
+                  origin[2] + a * x[2] + b * y[2] + c * z[2]}};
+      };
+      const P corner[3] = {at(-0.05, -0.04, 0), at(0.06, -0.03, 0), at(-0.01, 0.07, 0)};
+      for(double delta : {-1e-3, 1e-3, 1e-6, 1e-9, 1e-12, 1e-14, 1e-15, 4e-16, 2e-16, 1e-16}) {
+       for(int turn = 0; turn < 8; ++turn) {
+        const double height = 0.2, reach = R * (1 + delta), planar = std::sqrt(reach * reach - height * height);
+        std::vector<P> centers;
+        for(int i = 0; i < 3; ++i) {
+          const double angle = 0.4 + 0.7 * turn + 2.0943951023931957 * i;
+          centers.push_back(at(planar * std::cos(angle), planar * std::sin(angle), i == 1 ? -height : height));
+        }
+        const bool says = Test::covers(corner, centers, R, 0.);
+        if(delta < 0) {
+          EXPECT_TRUE(says) << "offset " << offset << ", tilt " << tilt;
+          continue;
+        }
+        // The truth, on the stored doubles (rounding far from the origin can close a tiny hole): the
+        // point of the triangle's plane equidistant from the three centres, computed exactly.
+        typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+        auto ek = [](const P& q) { return EK::Point_3(q[0], q[1], q[2]); };
+        const EK::Plane_3 plane(ek(corner[0]), ek(corner[1]), ek(corner[2]));
+        const auto o = CGAL::intersection(plane, CGAL::bisector(ek(centers[0]), ek(centers[1])),
+                                          CGAL::bisector(ek(centers[0]), ek(centers[2])));
+        const EK::Point_3* hole = o ? boost::get<EK::Point_3>(&*o) : nullptr;
+        ASSERT_NE(hole, nullptr);
+        const EK::Triangle_3 triangle(ek(corner[0]), ek(corner[1]), ek(corner[2]));
+        ASSERT_TRUE(triangle.has_on(*hole));
+        if(CGAL::squared_distance(*hole, ek(centers[0])) <= EK::FT(R * R)) {
+          continue; // no hole left in the stored doubles: any answer is right
+        }
+        ++holes;
+        EXPECT_FALSE(says) << "a hole at relative depth " << delta << " (offset " << offset << ", tilt " << tilt << ")";
+       }
+      }
+    }
+  }
+  EXPECT_GE(holes, 200); // most survive the rounding of the centres
+}
+
+// Near-tangent and near-degenerate configurations at random: a claim of coverage is checked on a
+// dense grid of the triangle against the exact distance, and must never be wrong.
+TEST(TriangleFragments, UnionCoverageNeverClaimsAnUncoveredPoint)
+{
+  typedef PDS::internal::Triangle_in_ball_union Test;
+  typedef Test::Point P;
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  Random rng(23);
+  int claims = 0;
+  for(int trial = 0; trial < 4000; ++trial) {
+    const double R = 1;
+    // a small triangle near the origin, and balls whose spheres pass close to its corners or to each other
+    P corner[3];
+    for(P& c : corner) c = P{{0.2 * rng.uniform(), 0.2 * rng.uniform(), 0.02 * rng.uniform()}};
+    std::vector<P> centers;
+    const int k = 2 + int(rng.uniform_index(4));
+    for(int i = 0; i < k; ++i) {
+      const P& target = corner[rng.uniform_index(3)];
+      const double t = 6.283185307179586 * rng.uniform(), h = 0.6 * (rng.uniform() - 0.5);
+      const double reach = R * (1 + (rng.uniform() < 0.5 ? 1e-13 : 1e-3) * (rng.uniform() - 0.5));
+      const double planar = std::sqrt(reach * reach - h * h);
+      centers.push_back(P{{target[0] + planar * std::cos(t), target[1] + planar * std::sin(t), target[2] + h}});
+    }
+    if(!Test::covers(corner, centers, R, 0.)) continue;
+    ++claims;
+    const int n = 60;
+    for(int i = 0; i <= n; ++i)
+      for(int j = 0; i + j <= n; ++j) {
+        const EK::FT u(double(i) / n), v(double(j) / n);
+        EK::Point_3 p[3];
+        for(int m = 0; m < 3; ++m) p[m] = EK::Point_3(corner[m][0], corner[m][1], corner[m][2]);
+        const EK::Point_3 q = p[0] + u * (p[1] - p[0]) + v * (p[2] - p[0]);
+        bool in = false;
+        for(const P& c : centers) in = in || CGAL::squared_distance(q, EK::Point_3(c[0], c[1], c[2])) <= EK::FT(R * R);
+        ASSERT_TRUE(in) << "trial " << trial << ": claimed covered, but a point is outside every ball";
+      }
+  }
+  EXPECT_GT(claims, 200); // the test has teeth only if coverage is claimed often
+}
+
+// Every sample within reach of a point is in that point's bucket, whatever the cell size.
+TEST(NeighborBuckets, BucketHoldsEveryNeighbor)
+{
+  Random rng(5);
+  for(double factor : {2., 4., 7.}) {
+    const double reach = 0.05;
+    PDS::internal::Neighbor_buckets buckets(reach, factor, 100);
+    std::vector<std::array<double, 3>> points;
+    for(int i = 0; i < 3000; ++i) {
+      // on a sphere of radius 1 around (10, -3, 2), so cells far from the origin and of all signs
+      const double z = 2 * rng.uniform() - 1, t = 6.283185307179586 * rng.uniform(), s = std::sqrt(1 - z * z);
+      points.push_back({{10 + s * std::cos(t), -3 + s * std::sin(t), 2 + z}});
+      buckets.insert(points.back());
+    }
+    EXPECT_EQ(buckets.size(), points.size());
+    for(int trial = 0; trial < 2000; ++trial) {
+      // queries exactly at distance reach from a sample too
+      std::array<double, 3> p = points[rng.uniform_index(points.size())];
+      if(trial % 2) p[0] += reach;
+      else for(double& c : p) c += reach * (rng.uniform() - 0.5);
+      const std::vector<std::array<double, 3>>* bucket = buckets.bucket(p);
+      for(const auto& q : points) {
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+        if(d2 > reach * reach) continue;
+        ASSERT_NE(bucket, nullptr);
+        EXPECT_NE(std::find(bucket->begin(), bucket->end(), q), bucket->end()) << "factor " << factor;
+      }
+    }
+  }
 }
 
 } // namespace

@@ -57,6 +57,15 @@ public:
   /// true only if every point of `f` is within `radius` of `center` (requirement 4); conservative
   bool is_covered(const Fragment& f, const std::array<double, 3>& center, double radius) const;
 
+  /// Optional. True only if every point of `f` is within `radius` of some point of `centers` (a range
+  /// of `std::array<double, 3>`), conservative as `is_covered()`. A fragment that straddles the
+  /// boundary between two balls is covered by their union but by neither alone; without this test
+  /// the engine splits it, and throws a dart at each piece, until single balls cover the pieces. The
+  /// engine calls it on children that no single ball covers, with the samples near the dart; a model
+  /// that does not define it gets single-ball tests only. `Triangle_fragment_traits_3` defines it.
+  template <class PointRange>
+  bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const;
+
   /// writes the children of `f`, which tile it (requirement 5)
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator children) const;

@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
 
 #include <algorithm>
 #include <array>
@@ -178,6 +179,20 @@ public:
     return squared_distance(at(face, f.u, f.v), center) <= r2 &&
            squared_distance(at(face, f.u + h, f.v), center) <= r2 &&
            squared_distance(at(face, f.u, f.v + h), center) <= r2;
+  }
+
+  /// Optional operation of `SurfaceFragmentTraits_3`: true only if the union of the balls of radius
+  /// `radius` around `centers` holds the fragment, proven with interval arithmetic (see
+  /// `internal/Triangle_in_ball_union.h`). Covers the fragments that straddle the boundary between
+  /// two balls, which no single ball holds.
+  template <class PointRange>
+  bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
+  {
+    const Face& face = faces_[f.face];
+    const double h = leg(f);
+    const Point corner[3] = {at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)};
+    // position_error_ bounds each coordinate; twice it bounds the distance
+    return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * position_error_);
   }
 
   /// the four children of the midpoint subdivision

@@ -6,7 +6,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Active_fragment_pool.h>
-#include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Neighbor_buckets.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <iterator>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -22,6 +24,15 @@ namespace Poisson_disk_sampling_3 {
 namespace internal {
 
 typedef std::array<double, 3> Point_d;
+
+/// whether a model offers the optional `is_covered_by_union(fragment, centers, radius)`
+template <class Traits, class = void>
+struct Has_union_coverage : std::false_type {};
+template <class Traits>
+struct Has_union_coverage<Traits, std::void_t<decltype(std::declval<const Traits&>().is_covered_by_union(
+                                      std::declval<const typename Traits::Fragment&>(),
+                                      std::declval<const std::vector<std::array<double, 3>>&>(), 1.))>>
+    : std::true_type {};
 
 /// what a run did, for tests and benchmarks
 struct Engine_statistics
@@ -89,10 +100,13 @@ public:
 
     const double r = 0.5 * d_;
     const std::size_t expected = std::size_t(total_area / (3.14159265358979323846 * r * r)) + 1;
-    Point_hash_grid grid(2 * d_ * (1 + 0x1.0p-10), expected < max_points_ ? expected : max_points_);
+    // cells of side 4D: a sample is copied into 3.4 buckets on average, a query scans about 30
+    // samples; 2D copies each sample 8 times, 6D to 8D scan twice as many for no measured gain
+    Neighbor_buckets buckets(d_, 4, expected < max_points_ ? expected : max_points_);
     Random rng(seed_);
     Engine_statistics stats;
-    std::vector<Point_d> near;          // samples within D of the dart: the only possible coverers
+    std::vector<Point_d> near;   // samples within D of the dart: the only possible single coverers of F
+    std::vector<Point_d> around; // samples within 2D of the dart: they may cover F together
     std::vector<Fragment> children;
 
     while(!pool.empty()) {
@@ -104,16 +118,19 @@ public:
       }
       ++stats.darts;
       const Point_d p = traits_.point(*sample);
-      const bool free = gather_near(grid, p, near);
+      const bool free = gather_near(buckets, p, near, around);
       if(free) {
-        if(grid.size() >= max_points_)
+        if(buckets.size() >= max_points_)
           throw Point_limit_exceeded("more than maximum_number_of_points (" + std::to_string(max_points_) +
                                      ") samples; use a larger radius or raise the bound");
-        grid.insert(p.data());
+        buckets.insert(p);
         ++stats.samples;
         output(*sample);
         near.assign(1, p);
+        around.push_back(p);
       }
+      // F itself gets the single-ball test only: it is rarely covered by the union when no single
+      // ball covers it, and if it is, its children are, and the union test on them drops them
       if(is_covered_by_any(item.fragment, near)) continue;
       if(item.depth >= max_depth_) {
         ++stats.dropped_at_max_depth;
@@ -123,7 +140,7 @@ public:
       traits_.split(item.fragment, std::back_inserter(children));
       for(const Fragment& c : children) {
         const double a = traits_.area(c);
-        if(a > 0 && !is_covered_by_any(c, near))
+        if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around))
           pool.push(Item{c, static_cast<unsigned char>(item.depth + 1)}, a);
       }
     }
@@ -137,19 +154,27 @@ private:
     unsigned char depth;
   };
 
-  // Fills `near` with the samples within D of p (and a few just outside); returns true if p is at
-  // distance >= D from every sample, decided exactly.
-  bool gather_near(const Point_hash_grid& grid, const Point_d& p, std::vector<Point_d>& near) const
+  // Fills `near` with the samples within D of p (and a few just outside), `around` with the ones
+  // within 2D that p's bucket holds; returns true if p is at distance >= D from every sample,
+  // decided exactly.
+  bool gather_near(const Neighbor_buckets& buckets, const Point_d& p, std::vector<Point_d>& near,
+                   std::vector<Point_d>& around) const
   {
     near.clear();
+    around.clear();
+    const std::vector<Point_d>* bucket = buckets.bucket(p);
+    if(!bucket) return true;
     bool free = true;
     const double d2_near = d_ * d_ * (1 + 1e-9);
-    grid.for_each_near(p.data(), d_, [&](Point_hash_grid::Index, const double* q) {
+    for(const Point_d& q : *bucket) {
       const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
-      if(dx * dx + dy * dy + dz * dz > d2_near) return;
-      near.push_back(Point_d{q[0], q[1], q[2]});
-      if(free && compare_distance_exact(p.data(), q, d_) == CGAL::SMALLER) free = false;
-    });
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 > 4 * d2_near) continue;
+      around.push_back(q);
+      if(d2 > d2_near) continue;
+      near.push_back(q);
+      if(free && compare_distance_exact(p.data(), q.data(), d_) == CGAL::SMALLER) free = false;
+    }
     return free;
   }
 
@@ -158,6 +183,12 @@ private:
     for(const Point_d& c : centers)
       if(traits_.is_covered(f, c, d_)) return true;
     return false;
+  }
+
+  bool is_covered_by_union(const Fragment& f, const std::vector<Point_d>& centers) const
+  {
+    if constexpr(Has_union_coverage<Traits>::value) return traits_.is_covered_by_union(f, centers, d_);
+    else return false;
   }
 
   const Traits& traits_;

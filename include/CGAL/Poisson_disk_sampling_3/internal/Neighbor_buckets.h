@@ -1,0 +1,80 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_NEIGHBOR_BUCKETS_H
+#define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_NEIGHBOR_BUCKETS_H
+
+#include <CGAL/Poisson_disk_sampling_3/internal/Cell_hash_table.h>
+
+#include <CGAL/assertions.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+/// The engine's samples, organised for the one query it makes per dart: the samples within distance
+/// `reach` of a point. Space is cut into cubic cells of side `cell_factor * reach`; each cell keeps,
+/// in one contiguous bucket, a copy of every sample within `reach` of the cell, so a query reads one
+/// bucket: one hash probe and a sequential scan. (A grid of single copies, as `Point_hash_grid`, has
+/// the query visit eight cells and chase a list through each: on large sets every step is a cache
+/// miss.) A sample is copied into the cells that meet the cube of half-side `reach` around it,
+/// (1 + 2 / cell_factor)^3 of them on average: memory stays O(samples).
+class Neighbor_buckets
+{
+public:
+  typedef std::array<double, 3> Point;
+
+  /// `expected_points` only sizes the hash table at the start
+  Neighbor_buckets(double reach, double cell_factor, std::size_t expected_points)
+    : reach_(reach), inv_cell_(1. / (cell_factor * reach)), cells_(expected_points / 8)
+  {
+    CGAL_precondition(reach > 0 && cell_factor >= 2);
+  }
+
+  std::size_t size() const { return count_; }
+
+  /// the bucket of p's cell: it holds every sample within `reach` of p, and some farther ones;
+  /// nullptr if there is no sample near p
+  const std::vector<Point>* bucket(const Point& p) const
+  {
+    const std::uint32_t b = cells_.find(grid_cell(p[0], inv_cell_), grid_cell(p[1], inv_cell_), grid_cell(p[2], inv_cell_));
+    return b == Cell_hash_table::none ? nullptr : &buckets_[b];
+  }
+
+  void insert(const Point& q)
+  {
+    // The cells that meet the box [q - m, q + m]. m exceeds reach by more than the rounding error of
+    // the box's corners, and grid_cell is monotone, so the cell of any p within reach of q is among them.
+    std::int64_t lo[3], hi[3];
+    for(int i = 0; i < 3; ++i) {
+      const double m = reach_ * (1 + 1e-9) + 1e-15 * std::abs(q[i]);
+      lo[i] = grid_cell(q[i] - m, inv_cell_);
+      hi[i] = grid_cell(q[i] + m, inv_cell_);
+    }
+    for(std::int64_t x = lo[0]; x <= hi[0]; ++x)
+      for(std::int64_t y = lo[1]; y <= hi[1]; ++y)
+        for(std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+          const std::uint32_t b = cells_.find_or_insert(x, y, z, std::uint32_t(buckets_.size()));
+          if(b == buckets_.size()) buckets_.emplace_back();
+          buckets_[b].push_back(q);
+        }
+    ++count_;
+  }
+
+private:
+  double reach_, inv_cell_;
+  Cell_hash_table cells_;
+  std::vector<std::vector<Point>> buckets_;
+  std::size_t count_ = 0;
+};
+
+} // namespace internal
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_NEIGHBOR_BUCKETS_H

@@ -1,0 +1,194 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
+#define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Uncertain.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+/// Whether a triangle lies in the union of equal balls, decided so that a `true` answer is a proof.
+///
+/// Why the test works: the triangle T is covered iff f(x) = min_i |x - c_i|^2 - r^2 is <= 0 on T.
+/// On the part of T in the Voronoi cell of c_i, f is the convex |x - c_i|^2 - r^2, whose maximum
+/// over that convex polygon is at one of its vertices: a corner of T, a point where an edge of T
+/// meets the bisector plane of two centres, or a point of T's plane equidistant from three centres.
+/// So T is covered iff every such point that lies in T is strictly inside some ball. The test
+/// computes all these candidate points (linear solves only: no square roots, no tangencies) and
+/// checks each one; checking candidates that are not Voronoi vertices, or that lie just outside T,
+/// can only turn a `true` into a `false`, never the reverse. (With balls of different radii the
+/// bisector planes become radical planes and the same argument holds.)
+///
+/// Rigour: the computation is a template on the number type. With `double` it is a fast filter;
+/// with `CGAL::Interval_nt<false>` every quantity is an interval that holds the exact value, and the
+/// answer is `true` only if every comparison is certain; near-degenerate configurations (an edge
+/// parallel to a bisector plane through it, three centres whose bisectors do not meet in one point)
+/// answer `false`, and the engine then splits the fragment, which is always safe. Points are taken
+/// relative to the first corner (in interval arithmetic, so the translation is exact), which keeps
+/// intervals narrow far from the origin.
+///
+/// The triangle is given by the double corners computed by the model; the exact triangle's corners
+/// are within `corner_error` of them, so every point of the exact triangle is within `corner_error`
+/// of the same barycentric point of the computed one: the balls are shrunk by `corner_error`.
+class Triangle_in_ball_union
+{
+public:
+  typedef std::array<double, 3> Point;
+  static constexpr std::size_t max_balls = 16; // the triple loop is cubic; a subset is always correct
+
+  /// `centers` may hold any samples: the ones that cannot meet the triangle are dropped here, and
+  /// any subset of the balls gives a correct (perhaps more often negative) answer.
+  template <class PointRange>
+  static bool covers(const Point (&corner)[3], const PointRange& centers, double radius, double corner_error)
+  {
+    Point kept[max_balls];
+    std::size_t k = 0;
+    const double r = radius - corner_error;
+    if(!(r > 0)) return false;
+    // most triangles that reach this test have a corner outside every ball: find out first
+    for(const Point& p : corner) {
+      bool in = false;
+      for(const auto& c : centers) {
+        const double x = p[0] - c[0], y = p[1] - c[1], z = p[2] - c[2];
+        if(x * x + y * y + z * z < r * r) {
+          in = true;
+          break;
+        }
+      }
+      if(!in) return false;
+    }
+    double lo[3], hi[3];
+    for(int i = 0; i < 3; ++i) {
+      lo[i] = (std::min)({corner[0][i], corner[1][i], corner[2][i]}) - r;
+      hi[i] = (std::max)({corner[0][i], corner[1][i], corner[2][i]}) + r;
+    }
+    // a unit normal, approximate: dropping a ball is always safe, so no care for rounding here
+    const double e1[3] = {corner[1][0] - corner[0][0], corner[1][1] - corner[0][1], corner[1][2] - corner[0][2]};
+    const double e2[3] = {corner[2][0] - corner[0][0], corner[2][1] - corner[0][1], corner[2][2] - corner[0][2]};
+    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if(!(nl > 0)) return false;
+    for(double& x : n) x /= nl;
+    for(const auto& c : centers) {
+      if(c[0] < lo[0] || c[0] > hi[0] || c[1] < lo[1] || c[1] > hi[1] || c[2] < lo[2] || c[2] > hi[2]) continue;
+      const double height = n[0] * (c[0] - corner[0][0]) + n[1] * (c[1] - corner[0][1]) + n[2] * (c[2] - corner[0][2]);
+      if(std::abs(height) >= r) continue; // the ball does not reach the plane
+      if(k == max_balls) break; // a subset is enough for a correct answer
+      kept[k++] = Point{{c[0], c[1], c[2]}};
+    }
+    if(k == 0) return false;
+    if(!decide<double>(corner, kept, k, r, 0.)) return false;
+    typedef CGAL::Interval_nt<false> I;
+    typename I::Protector protect; // rounding towards +infinity while the intervals are computed
+    return decide<I>(corner, kept, k, radius, corner_error);
+  }
+
+private:
+  template <class NT>
+  struct V
+  {
+    NT x, y, z;
+    V operator-(const V& o) const { return V{x - o.x, y - o.y, z - o.z}; }
+    V operator+(const V& o) const { return V{x + o.x, y + o.y, z + o.z}; }
+    V operator*(const NT& s) const { return V{x * s, y * s, z * s}; }
+    NT dot(const V& o) const { return x * o.x + y * o.y + z * o.z; }
+    V cross(const V& o) const { return V{y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
+  };
+
+  // the point minus the origin, as NT: exact for intervals (the difference is enclosed)
+  template <class NT>
+  static V<NT> relative(const Point& p, const Point& origin)
+  {
+    return V<NT>{NT(p[0]) - NT(origin[0]), NT(p[1]) - NT(origin[1]), NT(p[2]) - NT(origin[2])};
+  }
+
+  template <class NT>
+  static bool decide(const Point (&corner)[3], const Point* centers, std::size_t k, double radius, double shrink)
+  {
+    using CGAL::certainly;
+    const Point& o = corner[0];
+    const NT rr = NT(radius) - NT(shrink);
+    const NT r2 = rr * rr;
+    V<NT> c[max_balls];
+    NT c2[max_balls]; // |c_i|^2 / 2: the bisector plane of i and j is x . (c_j - c_i) = c2[j] - c2[i]
+    for(std::size_t i = 0; i < k; ++i) {
+      c[i] = relative<NT>(centers[i], o);
+      c2[i] = c[i].dot(c[i]) / NT(2);
+    }
+    const V<NT> v[3] = {V<NT>{NT(0), NT(0), NT(0)}, relative<NT>(corner[1], o), relative<NT>(corner[2], o)};
+    const V<NT> n = v[1].cross(v[2]); // T's plane is n . x = 0
+
+    // strictly inside some ball; the ball that held the last point is tried first, since the
+    // points tested one after the other are close
+    std::size_t last = 0;
+    auto covered = [&](const V<NT>& p) {
+      for(std::size_t step = 0; step < k; ++step) {
+        const std::size_t m = (last + step) % k;
+        const V<NT> w = p - c[m];
+        if(certainly(w.dot(w) < r2)) {
+          last = m;
+          return true;
+        }
+      }
+      return false;
+    };
+    auto outside_T = [&](const V<NT>& p) {
+      for(int e = 0; e < 3; ++e)
+        if(certainly((v[(e + 1) % 3] - v[e]).cross(p - v[e]).dot(n) < NT(0))) return true;
+      return false;
+    };
+
+    for(const V<NT>& p : v)
+      if(!covered(p)) return false;
+
+    // edges meet bisector planes
+    for(int e = 0; e < 3; ++e) {
+      const V<NT>& p = v[e];
+      const V<NT> d = v[(e + 1) % 3] - p;
+      for(std::size_t i = 0; i < k; ++i)
+        for(std::size_t j = i + 1; j < k; ++j) {
+          const V<NT> m = c[j] - c[i];
+          const NT h = c2[j] - c2[i];
+          // signed offsets of the edge's ends from the plane: no crossing if both are strictly on one side
+          const NT s0 = p.dot(m) - h, s1 = s0 + d.dot(m);
+          if((certainly(s0 > NT(0)) && certainly(s1 > NT(0))) || (certainly(s0 < NT(0)) && certainly(s1 < NT(0))))
+            continue;
+          const NT den = s0 - s1;
+          if(!certainly(den != NT(0))) return false; // the edge may lie in the plane
+          if(!covered(p + d * (s0 / den))) return false;
+        }
+    }
+
+    // points of T's plane equidistant from three centres
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j) {
+        const V<NT> m1 = c[j] - c[i];
+        const NT h1 = c2[j] - c2[i];
+        for(std::size_t l = j + 1; l < k; ++l) {
+          const V<NT> m2 = c[l] - c[i];
+          const NT h2 = c2[l] - c2[i];
+          const NT det = n.dot(m1.cross(m2));
+          if(!certainly(det != NT(0))) return false; // the three bisectors may not meet in one point
+          const V<NT> x = (m2.cross(n) * h1 + n.cross(m1) * h2) * (NT(1) / det);
+          if(outside_T(x)) continue;
+          if(!covered(x)) return false;
+        }
+      }
+    return true;
+  }
+};
+
+} // namespace internal
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
