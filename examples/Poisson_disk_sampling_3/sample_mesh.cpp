@@ -13,6 +13,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include "command_line.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -72,22 +74,20 @@ void write_ply(const std::string& path, const std::vector<Sample>& samples)
 int main(int argc, char** argv)
 {
   std::string mesh_file, out_file = "samples.ply";
-  double radius = 0, distance = 0;
-  long long count = 0;
-  unsigned seed = 0;
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if(a == "--radius" && has_value) radius = std::atof(argv[++i]);
-    else if(a == "--minimum-distance" && has_value) distance = std::atof(argv[++i]);
-    else if(a == "--count" && has_value) count = std::atoll(argv[++i]);
-    else if(a == "--seed" && has_value) seed = unsigned(std::strtoul(argv[++i], nullptr, 10));
-    else if(a == "-o" && has_value) out_file = argv[++i];
-    else if(!a.empty() && a[0] == '-') return usage(("unknown option or missing value: " + a).c_str());
-    else if(mesh_file.empty()) mesh_file = a;
-    else return usage("more than one mesh");
+  examples::Size_options size;
+  try {
+    for(int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      if(size.read(argc, argv, i)) continue;
+      if(a == "-o" && i + 1 < argc) out_file = argv[++i];
+      else if(!a.empty() && a[0] == '-') throw examples::Usage_error("unknown option or missing value: " + a);
+      else if(mesh_file.empty()) mesh_file = a;
+      else throw examples::Usage_error("more than one mesh");
+    }
+    size.check();
+  } catch(const examples::Usage_error& e) {
+    return usage(e.what());
   }
-  if((radius != 0) + (distance != 0) + (count != 0) > 1) return usage("give one of --radius, --minimum-distance, --count");
   if(mesh_file.empty()) mesh_file = default_mesh();
 
   Mesh mesh;
@@ -95,20 +95,16 @@ int main(int argc, char** argv)
     std::cerr << "error: cannot read a polygon mesh from " << mesh_file << "\n";
     return 1;
   }
-  if(radius == 0 && distance == 0 && count == 0) // about 10,000 points
-    distance = std::sqrt(0.6965 * CGAL::Polygon_mesh_processing::area(mesh) / 10000);
-  if(radius != 0) distance = 2 * radius;
 
   try {
     std::vector<Sample> samples;
     PDS::Sampling_statistics stats;
+    // with no size: about 10,000 points
+    const double default_distance = std::sqrt(0.6965 * CGAL::Polygon_mesh_processing::area(mesh) / 10000);
     const auto start = std::chrono::steady_clock::now();
-    if(count != 0)
-      PDS::sample_triangle_mesh_with_locations(mesh, std::back_inserter(samples),
-          PDS::parameters::number_of_points(count).random_seed(seed).statistics(std::ref(stats)));
-    else
-      PDS::sample_triangle_mesh_with_locations(mesh, std::back_inserter(samples),
-          PDS::parameters::minimum_distance(distance).random_seed(seed).statistics(std::ref(stats)));
+    size.sample_with(default_distance, stats, [&](const auto& np) {
+      PDS::sample_triangle_mesh_with_locations(mesh, std::back_inserter(samples), np);
+    });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     std::vector<K::Point_3> points;

@@ -10,6 +10,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Poisson_disk_sampling_3.h>
 
+#include "command_line.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -34,41 +36,39 @@ int usage(const char* message)
 
 int main(int argc, char** argv)
 {
-  double cx = 0, cy = 0, cz = 0, sphere_radius = 1, radius = 0, distance = 0;
-  long long count = 0;
-  unsigned seed = 0;
+  double cx = 0, cy = 0, cz = 0, sphere_radius = 1;
+  examples::Size_options size;
   std::string out_file = "sphere_samples.ply";
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if(a == "--center" && i + 3 < argc) {
-      cx = std::atof(argv[++i]);
-      cy = std::atof(argv[++i]);
-      cz = std::atof(argv[++i]);
-    } else if(a == "--sphere-radius" && has_value) sphere_radius = std::atof(argv[++i]);
-    else if(a == "--radius" && has_value) radius = std::atof(argv[++i]);
-    else if(a == "--minimum-distance" && has_value) distance = std::atof(argv[++i]);
-    else if(a == "--count" && has_value) count = std::atoll(argv[++i]);
-    else if(a == "--seed" && has_value) seed = unsigned(std::strtoul(argv[++i], nullptr, 10));
-    else if(a == "-o" && has_value) out_file = argv[++i];
-    else return usage(("unknown argument or missing value: " + a).c_str());
+  try {
+    for(int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      if(size.read(argc, argv, i)) continue;
+      if(a == "--center") {
+        cx = examples::read_number(argc, argv, i); // each call reads the next argument
+        cy = examples::read_number(argc, argv, i);
+        cz = examples::read_number(argc, argv, i);
+      } else if(a == "--sphere-radius") sphere_radius = examples::read_number(argc, argv, i);
+      else if(a == "-o" && i + 1 < argc) out_file = argv[++i];
+      else throw examples::Usage_error("unknown argument or missing value: " + a);
+    }
+    size.check();
+  } catch(const examples::Usage_error& e) {
+    return usage(e.what());
   }
-  if((radius != 0) + (distance != 0) + (count != 0) > 1) return usage("give one of --radius, --minimum-distance, --count");
-  if(radius == 0 && distance == 0 && count == 0)
-    distance = std::sqrt(0.6965 * 4 * 3.14159265358979323846 * sphere_radius * sphere_radius / 10000);
-  if(radius != 0) distance = 2 * radius;
+  if(!(sphere_radius > 0) || !std::isfinite(sphere_radius)) return usage("--sphere-radius takes a positive number");
 
   try {
+    // Sphere_3 takes the squared radius: the check above keeps a negative radius from passing as its square
     const K::Sphere_3 sphere(K::Point_3(cx, cy, cz), sphere_radius * sphere_radius);
     std::vector<K::Point_3> points;
     PDS::Sampling_statistics stats;
+    // with no size: about 10,000 points
+    const double default_distance =
+        std::sqrt(0.6965 * 4 * 3.14159265358979323846 * sphere_radius * sphere_radius / 10000);
     const auto start = std::chrono::steady_clock::now();
-    if(count != 0)
-      PDS::sample_sphere(sphere, std::back_inserter(points),
-                         PDS::parameters::number_of_points(count).random_seed(seed).statistics(std::ref(stats)));
-    else
-      PDS::sample_sphere(sphere, std::back_inserter(points),
-                         PDS::parameters::minimum_distance(distance).random_seed(seed).statistics(std::ref(stats)));
+    size.sample_with(default_distance, stats, [&](const auto& np) {
+      PDS::sample_sphere(sphere, std::back_inserter(points), np);
+    });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool pds = bool(PDS::is_poisson_disk_set(points, stats.minimum_distance));
     const bool maximal = bool(PDS::is_maximal(sphere, points, stats.minimum_distance));

@@ -1,0 +1,88 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the example programs' command lines share: numbers read strictly (a malformed one is an error,
+// never a silent 0), and the one size option every sampler takes (--radius, --minimum-distance or
+// --count) with --seed, passed on to the library, which checks the values and names the bad one.
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
+#define CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
+
+#include <CGAL/Poisson_disk_sampling_3.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace examples {
+
+/// a command line the program cannot use; main() prints it with the usage
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// the number in argv[i + 1], after option argv[i]; advances i
+inline double read_number(int argc, char** argv, int& i)
+{
+  const std::string option = argv[i];
+  if(i + 1 >= argc) throw Usage_error("missing number after " + option);
+  char* end = nullptr;
+  const char* text = argv[++i];
+  const double value = std::strtod(text, &end);
+  if(end == text || *end != '\0') throw Usage_error("malformed number after " + option + ": " + text);
+  return value;
+}
+
+struct Size_options
+{
+  std::optional<double> radius, minimum_distance, count, seed;
+
+  /// reads argv[i] (and its value) if it is one of the size options or --seed; advances i
+  bool read(int argc, char** argv, int& i)
+  {
+    const std::string a = argv[i];
+    std::optional<double>* target = a == "--radius" ? &radius
+                                    : a == "--minimum-distance" ? &minimum_distance
+                                    : a == "--count" ? &count
+                                    : a == "--seed" ? &seed
+                                    : nullptr;
+    if(!target) return false;
+    *target = read_number(argc, argv, i);
+    return true;
+  }
+
+  /// what the library cannot check itself: one size at most, integers where integers are meant
+  void check() const
+  {
+    if(bool(radius) + bool(minimum_distance) + bool(count) > 1)
+      throw Usage_error("give one of --radius, --minimum-distance, --count");
+    if(count && !(*count >= 1 && *count == std::floor(*count) && *count < 1e18))
+      throw Usage_error("--count takes a positive integer");
+    if(seed && !(*seed >= 0 && *seed <= 4294967295. && *seed == std::floor(*seed)))
+      throw Usage_error("--seed takes an integer from 0 to 4294967295");
+  }
+
+  bool has_size() const { return radius || minimum_distance || count; }
+
+  /// calls `sample(np)` with the named parameters of the size given (or `default_distance`), the
+  /// seed, and `stats` to fill
+  template <class Sample>
+  void sample_with(double default_distance, CGAL::Poisson_disk_sampling_3::Sampling_statistics& stats,
+                   Sample&& sample) const
+  {
+    namespace P = CGAL::Poisson_disk_sampling_3::parameters;
+    const unsigned s = seed ? unsigned(*seed) : 0u;
+    if(count) sample(P::number_of_points(std::size_t(*count)).random_seed(s).statistics(std::ref(stats)));
+    else if(radius) sample(P::radius(*radius).random_seed(s).statistics(std::ref(stats)));
+    else sample(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)
+                    .random_seed(s).statistics(std::ref(stats)));
+  }
+};
+
+} // namespace examples
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
