@@ -51,8 +51,9 @@ PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIt
                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
   const Sphere_fragment_traits_3 traits = internal::sphere_traits(sphere);
-  for(const auto& s : internal::sample_request(traits, np))
+  internal::sample_request(traits, np, [&](const Sphere_fragment_traits_3::Sample& s) {
     *out++ = typename K::Point_3(s.point[0], s.point[1], s.point[2]);
+  });
   return out;
 }
 

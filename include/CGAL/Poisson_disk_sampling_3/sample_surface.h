@@ -88,18 +88,17 @@ double total_area(const Traits& traits)
   return a;
 }
 
-template <class Traits>
-std::vector<typename Traits::Sample> run_engine(const Traits& traits, double d, std::uint64_t seed,
-                                                std::size_t max_points, Sampling_statistics& stats)
+/// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted
+template <class Traits, class Emit>
+void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points,
+                Sampling_statistics& stats, Emit&& emit)
 {
-  std::vector<typename Traits::Sample> samples;
   Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
-  const Engine_statistics e = engine.run([&](const typename Traits::Sample& s) { samples.push_back(s); });
+  const Engine_statistics e = engine.run(emit);
   stats.minimum_distance = d;
   ++stats.number_of_runs;
   stats.darts = e.darts;
   stats.dropped_fragments = e.dropped_at_max_depth;
-  return samples;
 }
 
 /// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run
@@ -122,7 +121,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   std::vector<typename Traits::Sample> best;
   Sampling_statistics best_stats;
   for(int run = 0; run < 12; ++run) {
-    std::vector<typename Traits::Sample> samples = run_engine(traits, d, seed, max_points, stats);
+    std::vector<typename Traits::Sample> samples;
+    run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); });
     const double got = double(samples.size());
     if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
       best.swap(samples);
@@ -145,9 +145,11 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                            std::to_string(tolerance) + "; the closest had " + std::to_string(best.size()));
 }
 
-/// runs a size request; fills the `statistics` parameter if given
-template <class Traits, class NamedParameters>
-std::vector<typename Traits::Sample> sample_request(const Traits& traits, const NamedParameters& np)
+/// Runs a size request and calls `emit(sample)` for each sample; fills the `statistics` parameter if
+/// given. A radius request streams the samples as they are accepted (no copy of the set is kept); a
+/// `number_of_points` request keeps the best run's samples until the search ends.
+template <class Traits, class NamedParameters, class Emit>
+void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit)
 {
   const Size_request size = read_size(np);
   const std::uint64_t seed = read_seed(np);
@@ -156,8 +158,11 @@ std::vector<typename Traits::Sample> sample_request(const Traits& traits, const 
   Sampling_statistics& stats = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
   stats = Sampling_statistics();
-  if(size.number_of_points > 0) return run_for_count(traits, size.number_of_points, seed, max_points, stats);
-  return run_engine(traits, size.minimum_distance, seed, max_points, stats);
+  if(size.number_of_points > 0) {
+    for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, stats)) emit(s);
+    return;
+  }
+  run_engine(traits, size.minimum_distance, seed, max_points, stats, emit);
 }
 
 } // namespace internal
@@ -209,7 +214,9 @@ std::vector<typename Traits::Sample> sample_request(const Traits& traits, const 
 /// \cgalNamedParamsEnd
 ///
 /// \returns the output iterator past the last sample
-/// \throws Invalid_input for a bad size or a surface with no area
+/// \throws Invalid_input for a bad size or a surface with no area. Exceptions are thrown before any
+///         sample is written, except `Point_limit_exceeded` raised while sampling (a surface that needs
+///         more samples than its area predicts), after which `out` may have received some samples.
 /// \throws Point_limit_exceeded when the bound is exceeded
 /// \throws Target_not_reached when `number_of_points` cannot be met
 template <class SurfaceFragmentTraits, class SampleOutputIterator,
@@ -217,7 +224,7 @@ template <class SurfaceFragmentTraits, class SampleOutputIterator,
 SampleOutputIterator sample_surface(const SurfaceFragmentTraits& traits, SampleOutputIterator out,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  for(const auto& s : internal::sample_request(traits, np)) *out++ = s;
+  internal::sample_request(traits, np, [&](const typename SurfaceFragmentTraits::Sample& s) { *out++ = s; });
   return out;
 }
 

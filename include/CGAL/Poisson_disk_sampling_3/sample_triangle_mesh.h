@@ -154,8 +154,9 @@ PointOutputIterator sample_triangle_mesh(const TriangleMesh& tm, PointOutputIter
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
   const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
-  for(const auto& s : internal::sample_request(traits, np))
+  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = typename GT::Point_3(s.point[0], s.point[1], s.point[2]);
+  });
   return out;
 }
 
@@ -173,8 +174,9 @@ SampleOutputIterator sample_triangle_mesh_with_locations(const TriangleMesh& tm,
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   std::vector<face_descriptor> face_of;
   const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
-  for(const auto& s : internal::sample_request(traits, np))
+  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::located_sample<GT, face_descriptor>(traits, s, [&](std::uint32_t i) { return face_of[i]; });
+  });
   return out;
 }
 
@@ -201,8 +203,9 @@ PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonR
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
                                                              Default_kernel>::type GT;
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
-  for(const auto& s : internal::sample_request(traits, np))
+  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = typename GT::Point_3(s.point[0], s.point[1], s.point[2]);
+  });
   return out;
 }
 
@@ -221,8 +224,9 @@ SampleOutputIterator sample_polygon_soup_with_locations(const PointRange& points
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
                                                              Default_kernel>::type GT;
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
-  for(const auto& s : internal::sample_request(traits, np))
+  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::located_sample<GT, std::size_t>(traits, s, [](std::uint32_t i) { return std::size_t(i); });
+  });
   return out;
 }
 
