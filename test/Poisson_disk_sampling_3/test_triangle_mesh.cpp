@@ -40,6 +40,10 @@ TEST_P(MeshSampling, IsMaximalPoissonDiskSet)
   EXPECT_LT(points.size(), 2.0 * c.points);
   EXPECT_EQ(stats.dropped_fragments, 0u);
   EXPECT_EQ(stats.minimum_distance, d);
+  // every sample is an accepted dart; darts that find their fragment covered are rejected ones
+  EXPECT_GE(stats.darts, points.size());
+  EXPECT_LE(stats.darts_on_covered_fragments, stats.darts - points.size());
+  EXPECT_GT(stats.darts_on_covered_fragments, 0u);
   expect_maximal_poisson_disk_set(m, points, d);
 }
 

@@ -25,6 +25,9 @@ struct Sampling_statistics
   std::size_t number_of_runs = 0;    ///< full dart-throwing runs: 1, or the search's runs for `number_of_points`
   std::size_t darts = 0;             ///< darts thrown by the last run
   std::size_t dropped_fragments = 0; ///< fragments dropped uncovered at the depth floor by the last run (normally 0)
+  /// darts of the last run that landed on a fragment found entirely covered, by samples accepted
+  /// after the fragment was made: a dart is how the engine finds out (about half of all darts)
+  std::size_t darts_on_covered_fragments = 0;
 };
 
 namespace internal {
@@ -99,6 +102,7 @@ void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   ++stats.number_of_runs;
   stats.darts = e.darts;
   stats.dropped_fragments = e.dropped_at_max_depth;
+  stats.darts_on_covered_fragments = e.darts_on_covered;
 }
 
 /// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run

@@ -40,6 +40,7 @@ struct Engine_statistics
   std::size_t darts = 0;              // fragments picked and given a dart
   std::size_t samples = 0;            // darts accepted
   std::size_t dropped_at_max_depth = 0; // uncovered fragments dropped at the depth floor
+  std::size_t darts_on_covered = 0;     // rejected darts whose fragment proved entirely covered
 };
 
 /// Checks a surface's total area against the point bound, before anything large is allocated.
@@ -131,18 +132,25 @@ public:
       }
       // F itself gets the single-ball test only: it is rarely covered by the union when no single
       // ball covers it, and if it is, its children are, and the union test on them drops them
-      if(is_covered_by_any(item.fragment, near)) continue;
+      if(is_covered_by_any(item.fragment, near)) {
+        stats.darts_on_covered += !free;
+        continue;
+      }
       if(item.depth >= max_depth_) {
         ++stats.dropped_at_max_depth;
         continue;
       }
       children.clear();
       traits_.split(item.fragment, std::back_inserter(children));
+      bool kept = false;
       for(const Fragment& c : children) {
         const double a = traits_.area(c);
-        if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around))
+        if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around)) {
           pool.push(Item{c, static_cast<unsigned char>(item.depth + 1)}, a);
+          kept = true;
+        }
       }
+      stats.darts_on_covered += !free && !kept;
     }
     return stats;
   }
