@@ -129,12 +129,13 @@ void mesh_case(benchmark::State& state, const std::string& name)
   const double d = std::sqrt(0.6965 * area / double(state.range(0)));
   std::vector<Point> points;
   double seconds = 0, peak = 0;
+  PDS::Sampling_statistics stats;
   for(auto _ : state) {
     points.clear();
     points.shrink_to_fit();
     const Heap_peak heap;
     const auto start = std::chrono::steady_clock::now();
-    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
     peak = heap.bytes();
     state.SetIterationTime(seconds);
@@ -148,6 +149,7 @@ void mesh_case(benchmark::State& state, const std::string& name)
   state.counters["faces_per_second"] = faces / seconds;
   state.counters["peak_heap_bytes_per_point"] = peak / n; // the mesh was allocated before: not counted
   state.counters["memory_budget_use"] = peak / (200 * n + 300 * faces); // <= 1 is the target
+  state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / n;
   state.counters["floor_seconds"] = floor;
   state.counters["floor_ratio"] = seconds / floor;
 }

@@ -44,6 +44,11 @@ TEST_P(MeshSampling, IsMaximalPoissonDiskSet)
   EXPECT_GE(stats.darts, points.size());
   EXPECT_LE(stats.darts_on_covered_fragments, stats.darts - points.size());
   EXPECT_GT(stats.darts_on_covered_fragments, 0u);
+  // every face of positive area starts active; a dart removes one fragment and adds at most four
+  std::size_t positive = 0;
+  for(auto f : faces(m)) positive += PMP::face_area(f, m) > 0;
+  EXPECT_GE(stats.peak_active_fragments, positive);
+  EXPECT_LE(stats.peak_active_fragments, positive + 3 * stats.darts);
   expect_maximal_poisson_disk_set(m, points, d);
 }
 

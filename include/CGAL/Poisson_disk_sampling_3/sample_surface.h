@@ -28,6 +28,9 @@ struct Sampling_statistics
   /// darts of the last run that landed on a fragment found entirely covered, by samples accepted
   /// after the fragment was made: a dart is how the engine finds out (about half of all darts)
   std::size_t darts_on_covered_fragments = 0;
+  /// the most fragments active at once in the last run: what the engine's pool of fragments holds at
+  /// its largest (for triangles, 40 bytes each)
+  std::size_t peak_active_fragments = 0;
 };
 
 namespace internal {
@@ -103,6 +106,7 @@ void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   stats.darts = e.darts;
   stats.dropped_fragments = e.dropped_at_max_depth;
   stats.darts_on_covered_fragments = e.darts_on_covered;
+  stats.peak_active_fragments = e.peak_active;
 }
 
 /// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run

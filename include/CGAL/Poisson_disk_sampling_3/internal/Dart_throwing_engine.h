@@ -41,6 +41,7 @@ struct Engine_statistics
   std::size_t samples = 0;            // darts accepted
   std::size_t dropped_at_max_depth = 0; // uncovered fragments dropped at the depth floor
   std::size_t darts_on_covered = 0;     // rejected darts whose fragment proved entirely covered
+  std::size_t peak_active = 0;          // the most fragments in the pool at once
 };
 
 /// Checks a surface's total area against the point bound, before anything large is allocated.
@@ -111,6 +112,7 @@ public:
     std::vector<Fragment> children;
 
     while(!pool.empty()) {
+      if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
       const Item item = pool.pick_and_remove(rng);
       const auto sample = traits_.random_sample(item.fragment, rng);
       if(!sample) { // a rejection step in the model refused the dart; F stays as it is
