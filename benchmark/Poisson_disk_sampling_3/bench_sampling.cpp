@@ -159,11 +159,12 @@ void sphere_case(benchmark::State& state)
   const K::Sphere_3 sphere(CGAL::ORIGIN, 1);
   const double d = std::sqrt(0.6965 * 4 * 3.14159265358979323846 / double(state.range(0)));
   std::vector<Point> points;
+  PDS::Sampling_statistics stats;
   double seconds = 0;
   for(auto _ : state) {
     points.clear();
     const auto start = std::chrono::steady_clock::now();
-    PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+    PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
     state.SetIterationTime(seconds);
   }
@@ -171,6 +172,7 @@ void sphere_case(benchmark::State& state)
   state.counters["points"] = double(points.size());
   state.counters["seconds"] = seconds;
   state.counters["points_per_second"] = double(points.size()) / seconds;
+  state.counters["darts_per_point"] = double(stats.darts) / double(points.size());
 }
 
 // number_of_points mode against the radius mode giving the same count: args: n
