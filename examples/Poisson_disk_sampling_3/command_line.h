@@ -66,8 +66,6 @@ struct Size_options
       throw Usage_error("--seed takes an integer from 0 to 4294967295");
   }
 
-  bool has_size() const { return radius || minimum_distance || count; }
-
   /// calls `sample(np)` with the named parameters of the size given (or `default_distance`), the
   /// seed, and `stats` to fill
   template <class Sample>

@@ -174,11 +174,9 @@ public:
     const double r = radius - 4 * position_error_;
     if(!(r > 0)) return false;
     const double r2 = r * r * (1 - 8 * std::numeric_limits<double>::epsilon());
-    const Face& face = faces_[f.face];
-    const double h = leg(f);
-    return squared_distance(at(face, f.u, f.v), center) <= r2 &&
-           squared_distance(at(face, f.u + h, f.v), center) <= r2 &&
-           squared_distance(at(face, f.u, f.v + h), center) <= r2;
+    const std::array<Point, 3> c = corners(f);
+    return squared_distance(c[0], center) <= r2 && squared_distance(c[1], center) <= r2 &&
+           squared_distance(c[2], center) <= r2;
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: true only if the union of the balls of radius
@@ -188,9 +186,8 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
   {
-    const Face& face = faces_[f.face];
-    const double h = leg(f);
-    const Point corner[3] = {at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)};
+    const std::array<Point, 3> c = corners(f);
+    const Point corner[3] = {c[0], c[1], c[2]};
     // position_error_ bounds each coordinate; twice it bounds the distance
     return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * position_error_);
   }
@@ -217,6 +214,14 @@ private:
     double area;
     std::uint8_t first; // which given corner is v0
   };
+
+  // the computed corners of a fragment: the right-angle corner, then along u, then along v
+  std::array<Point, 3> corners(const Fragment& f) const
+  {
+    const Face& face = faces_[f.face];
+    const double h = leg(f);
+    return {{at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)}};
+  }
 
   // the signed leg length in parameter space
   static double leg(const Fragment& f) { return std::ldexp(f.inverted ? -1. : 1., -int(f.level)); }

@@ -25,6 +25,10 @@ inline std::int64_t grid_cell(double c, double inv_cell)
   return std::int64_t(x);
 }
 
+/// The half-side of a box around coordinate `c` that holds every point within `reach` of it, widened
+/// by more than the rounding error of computing the box's corners `c - m` and `c + m`
+inline double widened_reach(double reach, double c) { return reach * (1 + 1e-9) + 1e-15 * std::abs(c); }
+
 /// A map from the integer coordinates of a grid cell to a 32-bit value, by open addressing. Sparse:
 /// memory is O(cells used), which for points on a surface is a vanishing part of the bounding box.
 class Cell_hash_table

@@ -48,11 +48,11 @@ public:
 
   void insert(const Point& q)
   {
-    // The cells that meet the box [q - m, q + m]. m exceeds reach by more than the rounding error of
-    // the box's corners, and grid_cell is monotone, so the cell of any p within reach of q is among them.
+    // The cells that meet the box [q - m, q + m]; grid_cell is monotone, so the cell of any p within
+    // reach of q is among them.
     std::int64_t lo[3], hi[3];
     for(int i = 0; i < 3; ++i) {
-      const double m = reach_ * (1 + 1e-9) + 1e-15 * std::abs(q[i]);
+      const double m = widened_reach(reach_, q[i]);
       lo[i] = grid_cell(q[i] - m, inv_cell_);
       hi[i] = grid_cell(q[i] + m, inv_cell_);
     }

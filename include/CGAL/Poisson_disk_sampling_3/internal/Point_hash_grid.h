@@ -55,7 +55,7 @@ public:
   {
     double lo[3], hi[3];
     for(int i = 0; i < 3; ++i) {
-      const double m = radius * (1 + 1e-9) + 1e-15 * std::abs(p[i]);
+      const double m = widened_reach(radius, p[i]);
       lo[i] = p[i] - m;
       hi[i] = p[i] + m;
     }
