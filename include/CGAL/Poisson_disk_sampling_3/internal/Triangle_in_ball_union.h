@@ -66,22 +66,20 @@ public:
       }
       if(!in) return false;
     }
-    double lo[3], hi[3];
-    for(int i = 0; i < 3; ++i) {
-      lo[i] = (std::min)({corner[0][i], corner[1][i], corner[2][i]}) - r;
-      hi[i] = (std::max)({corner[0][i], corner[1][i], corner[2][i]}) + r;
+    // Only the balls that meet T matter: the union of the others misses T. Keep the balls that meet
+    // T's circumscribing ball around its centroid; the test is cubic in their number, and this keeps
+    // two or three for a small fragment instead of the dozen a box would. (Rounding here only drops
+    // or keeps a ball: any subset of the balls gives a correct answer.)
+    double g[3], reach2 = 0;
+    for(int i = 0; i < 3; ++i) g[i] = (corner[0][i] + corner[1][i] + corner[2][i]) / 3;
+    for(const Point& p : corner) {
+      const double x = p[0] - g[0], y = p[1] - g[1], z = p[2] - g[2];
+      reach2 = (std::max)(reach2, x * x + y * y + z * z);
     }
-    // a unit normal, approximate: dropping a ball is always safe, so no care for rounding here
-    const double e1[3] = {corner[1][0] - corner[0][0], corner[1][1] - corner[0][1], corner[1][2] - corner[0][2]};
-    const double e2[3] = {corner[2][0] - corner[0][0], corner[2][1] - corner[0][1], corner[2][2] - corner[0][2]};
-    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if(!(nl > 0)) return false;
-    for(double& x : n) x /= nl;
+    const double reach = (r + std::sqrt(reach2)) * (1 + 1e-9);
     for(const auto& c : centers) {
-      if(c[0] < lo[0] || c[0] > hi[0] || c[1] < lo[1] || c[1] > hi[1] || c[2] < lo[2] || c[2] > hi[2]) continue;
-      const double height = n[0] * (c[0] - corner[0][0]) + n[1] * (c[1] - corner[0][1]) + n[2] * (c[2] - corner[0][2]);
-      if(std::abs(height) >= r) continue; // the ball does not reach the plane
+      const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
+      if(x * x + y * y + z * z >= reach * reach) continue;
       if(k == max_balls) break; // a subset is enough for a correct answer
       kept[k++] = Point{{c[0], c[1], c[2]}};
     }
