@@ -66,6 +66,12 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const;
 
+  /// Optional. Starts loading into the cache what `random_sample(f, rng)` will read, without waiting
+  /// for it (for instance with `__builtin_prefetch`). The engine calls it for a whole batch of darts
+  /// before it places any of them, so that their cache misses overlap. A hint: it must not change any
+  /// result.
+  void prefetch(const Fragment& f) const;
+
   /// writes the children of `f`, which tile it (requirement 5)
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator children) const;

@@ -6,6 +6,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
 
 #include <algorithm>
 #include <array>
@@ -190,6 +191,15 @@ public:
     const Point corner[3] = {c[0], c[1], c[2]};
     // position_error_ bounds each coordinate; twice it bounds the distance
     return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * position_error_);
+  }
+
+  /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
+  /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
+  void prefetch(const Fragment& f) const
+  {
+    const Face* face = &faces_[f.face];
+    internal::prefetch(face);
+    internal::prefetch(&face->e2); // the record spans two cache lines
   }
 
   /// the four children of the midpoint subdivision

@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_CELL_HASH_TABLE_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
 
 #include <cmath>
 #include <cstdint>
@@ -45,6 +46,12 @@ public:
   }
 
   std::size_t size() const { return used_; }
+
+  /// brings the first slot the lookup of a cell reads into the cache, without waiting for it
+  void prefetch(std::int64_t x, std::int64_t y, std::int64_t z) const
+  {
+    internal::prefetch(&slots_[hash(x, y, z) & (slots_.size() - 1)]);
+  }
 
   /// the value of a cell, `none` if it has none
   std::uint32_t find(std::int64_t x, std::int64_t y, std::int64_t z) const

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -33,6 +34,13 @@ struct Has_union_coverage<Traits, std::void_t<decltype(std::declval<const Traits
                                       std::declval<const typename Traits::Fragment&>(),
                                       std::declval<const std::vector<std::array<double, 3>>&>(), 1.))>>
     : std::true_type {};
+
+/// whether a model offers the optional `prefetch(fragment)`
+template <class Traits, class = void>
+struct Has_prefetch : std::false_type {};
+template <class Traits>
+struct Has_prefetch<Traits, std::void_t<decltype(std::declval<const Traits&>().prefetch(
+                                std::declval<const typename Traits::Fragment&>()))>> : std::true_type {};
 
 /// what a run did, for tests and benchmarks
 struct Engine_statistics
@@ -107,52 +115,98 @@ public:
     Neighbor_buckets buckets(d_, 4, expected < max_points_ ? expected : max_points_);
     Random rng(seed_);
     Engine_statistics stats;
-    std::vector<Point_d> near;   // samples within D of the dart: the only possible single coverers of F
-    std::vector<Point_d> around; // samples within 2D of the dart: they may cover F together
+    std::vector<Dart> darts;
+    darts.reserve(max_batch);
+    std::vector<Point_d> accepted; // the samples accepted in the current batch
+    std::vector<Point_d> near;     // samples within D of a dart: the only possible single coverers of F
+    std::vector<Point_d> around;   // samples within 2D of a dart: they may cover F together
     std::vector<Fragment> children;
 
     while(!pool.empty()) {
       if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
-      const Item item = pool.pick_and_remove(rng);
-      const auto sample = traits_.random_sample(item.fragment, rng);
-      if(!sample) { // a rejection step in the model refused the dart; F stays as it is
-        pool.push(item, traits_.area(item.fragment));
-        continue;
+      // A batch throws n independent darts at the pool as it stands, then processes them in order:
+      // the same process as throwing them one by one, because fragments are only ever a cover of the
+      // free area, and a dart on a covered spot is rejected either way (design.md, "Batches").
+      // Each stage below starts the memory accesses of the next one for all darts of the batch, so
+      // that their cache misses overlap instead of following each other.
+      pool.begin_batch();
+      std::size_t n = pool.size() / 8;
+      n = n < 1 ? 1 : (n > max_batch ? max_batch : n);
+      darts.resize(n);
+      for(Dart& d : darts) {
+        d.handle = pool.draw(rng);
+        d.u = rng.uniform();
+        pool.prefetch(d.handle);
       }
-      ++stats.darts;
-      const Point_d p = traits_.point(*sample);
-      const bool free = gather_near(buckets, p, near, around);
-      if(free) {
+      std::size_t m = 0;
+      for(const Dart& d : darts) // the pool's rejection step: a refused draw is no dart
+        if(pool.accepts(d.handle, d.u)) {
+          darts[m] = d;
+          darts[m].item = pool.item(d.handle);
+          prefetch_fragment(darts[m].item.fragment);
+          ++m;
+        }
+      darts.resize(m);
+      m = 0;
+      for(Dart& d : darts) {
+        d.sample = traits_.random_sample(d.item.fragment, rng);
+        if(!d.sample) continue; // a rejection step in the model refused the dart
+        d.point = traits_.point(*d.sample);
+        d.cell = buckets.cell(d.point);
+        buckets.prefetch_slot(d.cell);
+        darts[m++] = d;
+      }
+      darts.resize(m);
+      stats.darts += m;
+      for(const Dart& d : darts) buckets.prefetch_header(d.cell);
+      for(Dart& d : darts) {
+        d.bucket = buckets.bucket(d.cell);
+        Neighbor_buckets::prefetch_points(d.bucket);
+      }
+      for(Dart& d : darts) d.free = is_free(d.bucket, d.point);
+
+      accepted.clear();
+      for(Dart& d : darts) {
+        d.accepted = false;
+        if(!d.free || !is_free(&accepted, d.point)) continue;
         if(buckets.size() >= max_points_)
           throw Point_limit_exceeded("more than maximum_number_of_points (" + std::to_string(max_points_) +
                                      ") samples; use a larger radius or raise the bound");
-        buckets.insert(p);
+        buckets.insert(d.point);
+        accepted.push_back(d.point);
+        d.accepted = true;
         ++stats.samples;
-        output(*sample);
-        near.assign(1, p);
-        around.push_back(p);
+        output(*d.sample);
       }
-      // F itself gets the single-ball test only: it is rarely covered by the union when no single
-      // ball covers it, and if it is, its children are, and the union test on them drops them
-      if(is_covered_by_any(item.fragment, near)) {
-        stats.darts_on_covered += !free;
-        continue;
-      }
-      if(item.depth >= max_depth_) {
-        ++stats.dropped_at_max_depth;
-        continue;
-      }
-      children.clear();
-      traits_.split(item.fragment, std::back_inserter(children));
-      bool kept = false;
-      for(const Fragment& c : children) {
-        const double a = traits_.area(c);
-        if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around)) {
-          pool.push(Item{c, static_cast<unsigned char>(item.depth + 1)}, a);
-          kept = true;
+
+      // Each fragment that got a dart leaves the pool; what of it is not covered comes back as
+      // children. A fragment drawn twice is handled once.
+      for(const Dart& d : darts) {
+        if(!pool.take(d.handle)) continue;
+        gather_near(buckets.bucket(d.point), d.point, near, around);
+        // F itself gets the single-ball test only: it is rarely covered by the union when no single
+        // ball covers it, and if it is, its children are, and the union test on them drops them
+        if(is_covered_by_any(d.item.fragment, near)) {
+          stats.darts_on_covered += !d.accepted;
+          continue;
         }
+        if(d.item.depth >= max_depth_) {
+          ++stats.dropped_at_max_depth;
+          continue;
+        }
+        children.clear();
+        traits_.split(d.item.fragment, std::back_inserter(children));
+        bool kept = false;
+        for(const Fragment& c : children) {
+          const double a = traits_.area(c);
+          if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around)) {
+            pool.push(Item{c, static_cast<unsigned char>(d.item.depth + 1)}, a);
+            kept = true;
+          }
+        }
+        stats.darts_on_covered += !d.accepted && !kept;
       }
-      stats.darts_on_covered += !free && !kept;
+      pool.end_batch();
     }
     return stats;
   }
@@ -164,28 +218,61 @@ private:
     unsigned char depth;
   };
 
-  // Fills `near` with the samples within D of p (and a few just outside), `around` with the ones
-  // within 2D that p's bucket holds; returns true if p is at distance >= D from every sample,
-  // decided exactly.
-  bool gather_near(const Neighbor_buckets& buckets, const Point_d& p, std::vector<Point_d>& near,
+  typedef Active_fragment_pool<Item> Pool;
+
+  // the state of a dart through the stages of a batch
+  struct Dart
+  {
+    typename Pool::Handle handle;
+    double u;                       // for the pool's rejection step
+    Item item;
+    std::optional<Sample> sample;
+    Point_d point;
+    Neighbor_buckets::Cell cell;
+    const std::vector<Point_d>* bucket;
+    bool free;                      // at distance >= D from the samples before the batch
+    bool accepted;
+  };
+
+  // Darts per batch, at most. Large enough that a batch's cache misses overlap, small enough that what
+  // the batch reads stays in the second-level cache until its last stage.
+  static constexpr std::size_t max_batch = 256;
+
+  void prefetch_fragment(const Fragment& f) const
+  {
+    if constexpr(Has_prefetch<Traits>::value) traits_.prefetch(f);
+    else (void)f;
+  }
+
+  // true if p is at distance >= D from every point in `points`, decided exactly
+  bool is_free(const std::vector<Point_d>* points, const Point_d& p) const
+  {
+    if(!points) return true;
+    const double d2_near = d_ * d_ * (1 + 1e-9);
+    for(const Point_d& q : *points) {
+      const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+      if(dx * dx + dy * dy + dz * dz <= d2_near && compare_distance_exact(p.data(), q.data(), d_) == CGAL::SMALLER)
+        return false;
+    }
+    return true;
+  }
+
+  // Fills `near` with the samples of `bucket` within D of p (and a few just outside), `around` with
+  // the ones within 2D
+  void gather_near(const std::vector<Point_d>* bucket, const Point_d& p, std::vector<Point_d>& near,
                    std::vector<Point_d>& around) const
   {
     near.clear();
     around.clear();
-    const std::vector<Point_d>* bucket = buckets.bucket(p);
-    if(!bucket) return true;
-    bool free = true;
+    if(!bucket) return;
     const double d2_near = d_ * d_ * (1 + 1e-9);
     for(const Point_d& q : *bucket) {
       const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
       const double d2 = dx * dx + dy * dy + dz * dz;
       if(d2 > 4 * d2_near) continue;
       around.push_back(q);
-      if(d2 > d2_near) continue;
-      near.push_back(q);
-      if(free && compare_distance_exact(p.data(), q.data(), d_) == CGAL::SMALLER) free = false;
+      if(d2 <= d2_near) near.push_back(q);
     }
-    return free;
   }
 
   bool is_covered_by_any(const Fragment& f, const std::vector<Point_d>& centers) const

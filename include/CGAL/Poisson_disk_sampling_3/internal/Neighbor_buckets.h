@@ -38,12 +38,43 @@ public:
 
   std::size_t size() const { return count_; }
 
-  /// the bucket of p's cell: it holds every sample within `reach` of p, and some farther ones;
-  /// nullptr if there is no sample near p
-  const std::vector<Point>* bucket(const Point& p) const
+  /// a cell of the grid
+  struct Cell
   {
-    const std::uint32_t b = cells_.find(grid_cell(p[0], inv_cell_), grid_cell(p[1], inv_cell_), grid_cell(p[2], inv_cell_));
+    std::int64_t x, y, z;
+  };
+
+  Cell cell(const Point& p) const
+  {
+    return Cell{grid_cell(p[0], inv_cell_), grid_cell(p[1], inv_cell_), grid_cell(p[2], inv_cell_)};
+  }
+
+  /// the bucket of a cell: it holds every sample within `reach` of the cell, and some farther ones;
+  /// nullptr if there is no sample near the cell. Valid until the next `insert()`.
+  const std::vector<Point>* bucket(const Cell& c) const
+  {
+    const std::uint32_t b = cells_.find(c.x, c.y, c.z);
     return b == Cell_hash_table::none ? nullptr : &buckets_[b];
+  }
+
+  const std::vector<Point>* bucket(const Point& p) const { return bucket(cell(p)); }
+
+  /// The query of a cell makes three dependent memory accesses: the hash slot, the bucket's header,
+  /// its points. These start one of them without waiting, so that a batch of queries overlaps them.
+  void prefetch_slot(const Cell& c) const { cells_.prefetch(c.x, c.y, c.z); }
+  void prefetch_header(const Cell& c) const
+  {
+    const std::uint32_t b = cells_.find(c.x, c.y, c.z);
+    if(b != Cell_hash_table::none) internal::prefetch(&buckets_[b]);
+  }
+  static void prefetch_points(const std::vector<Point>* bucket)
+  {
+    if(!bucket || bucket->empty()) return;
+    // every cache line of the bucket: about ten, too few for the hardware's stream detection
+    const char* first = reinterpret_cast<const char*>(bucket->data());
+    const char* last = reinterpret_cast<const char*>(bucket->data() + bucket->size()) - 1;
+    for(const char* p = first; p <= last; p += 64) internal::prefetch(p);
+    internal::prefetch(last);
   }
 
   void insert(const Point& q)

@@ -1,0 +1,26 @@
+// Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_PREFETCH_H
+#define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_PREFETCH_H
+
+namespace CGAL {
+namespace Poisson_disk_sampling_3 {
+namespace internal {
+
+/// Asks the processor to bring the cache line of `p` in, without waiting for it; a hint only (no
+/// effect on the results, nothing on compilers without the builtin).
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
+} // namespace internal
+} // namespace Poisson_disk_sampling_3
+} // namespace CGAL
+
+#endif // CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_PREFETCH_H
