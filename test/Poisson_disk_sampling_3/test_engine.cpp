@@ -49,14 +49,14 @@ TEST(Random, SameSeedSameStreamAndRanges)
   EXPECT_EQ(Random(0).next(), Random(0).next());
 }
 
-// One complete draw: the pool's rejection step repeated until it accepts.
+// One complete draw: the pool's rejection step repeated until it accepts; items are indices in `areas`.
 template <class Pool>
-typename Pool::Handle draw_one(Pool& pool, Random& rng)
+typename Pool::Handle draw_one(Pool& pool, Random& rng, const std::vector<double>& areas)
 {
   pool.begin_batch();
   for(;;) {
     const typename Pool::Handle h = pool.draw(rng);
-    if(pool.accepts(h, rng.uniform())) return h;
+    if(pool.accepts(h, areas[std::size_t(pool.item(h))], rng.uniform())) return h;
   }
 }
 
@@ -74,7 +74,7 @@ TEST(ActiveFragmentPool, PicksInProportionToArea)
   std::vector<double> count(areas.size(), 0);
   typedef PDS::internal::Active_fragment_pool<int> Pool;
   for(int k = 0; k < picks; ++k) {
-    const Pool::Handle h = draw_one(pool, rng);
+    const Pool::Handle h = draw_one(pool, rng, areas);
     const int i = pool.item(h);
     count[std::size_t(i)] += 1;
     EXPECT_TRUE(pool.take(h));
@@ -94,12 +94,11 @@ TEST(ActiveFragmentPool, PicksInProportionToArea)
 TEST(ActiveFragmentPool, ReachesBinsFarBelowTheFirst)
 {
   PDS::internal::Active_fragment_pool<int> pool(1.0);
-  pool.push(0, 1.0);
-  pool.push(1, std::ldexp(1., -80));
-  pool.push(2, std::ldexp(0.75, -100));
+  const std::vector<double> areas{1.0, std::ldexp(1., -80), std::ldexp(0.75, -100)};
+  for(int i = 0; i < 3; ++i) pool.push(i, areas[std::size_t(i)]);
   Random rng(3);
   auto pick_and_remove = [&] {
-    const auto h = draw_one(pool, rng);
+    const auto h = draw_one(pool, rng, areas);
     const int i = pool.item(h);
     pool.take(h);
     pool.end_batch();

@@ -193,6 +193,9 @@ public:
     return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * position_error_);
   }
 
+  /// Optional operation of `SurfaceFragmentTraits_3`: the number of splits from the fragment's root
+  int level(const Fragment& f) const { return f.level; }
+
   /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
   /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
   void prefetch(const Fragment& f) const

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -33,6 +34,11 @@ namespace internal {
 /// draws are independent and identically distributed (the engine relies on it), and their memory
 /// accesses can overlap. `take()` marks a drawn fragment for removal at `end_batch()`; `push()` may be
 /// called at any time.
+///
+/// Memory: a bin stores its fragments in chunks of 256, so that the pool never holds more than a
+/// chunk of free room per bin and never copies a bin to grow it (a doubling vector holds up to twice
+/// its contents, three times while it moves). The areas are not stored: the caller passes the
+/// fragment's area to `accepts()` (the engine computes it from the model, which the dart reads anyway).
 template <class Item>
 class Active_fragment_pool
 {
@@ -63,7 +69,7 @@ public:
     }
     if(bins_[b].size() >= std::numeric_limits<std::uint32_t>::max())
       throw std::length_error("Active_fragment_pool: too many fragments in one bin");
-    bins_[b].push_back(Entry{item, area});
+    bins_[b].push_back(item);
     if(size_ == 0 || b < first_) first_ = b;
     if(size_ == 0 || b > last_) last_ = b;
     ++size_;
@@ -96,24 +102,27 @@ public:
     return Handle{std::uint32_t(b), std::uint32_t(rng.uniform_index(bins_[b].size()))};
   }
 
-  /// the rejection step of a draw: true with probability area / bin bound
-  bool accepts(const Handle& h, double u) const
+  /// the rejection step of a draw: true with probability area / bin bound, for `u` uniform in [0, 1);
+  /// `area` must be the area the fragment was pushed with
+  bool accepts(const Handle& h, double area, double u) const
   {
-    const double a = bins_[h.bin][h.index].area;
-    CGAL_precondition(a > 0); // not taken yet: draws come before takes in a batch
-    return u * bounds_[h.bin] < a;
+    CGAL_precondition(bin_of(area) == h.bin);
+    return u * bounds_[h.bin] < area;
   }
 
   void prefetch(const Handle& h) const { internal::prefetch(&bins_[h.bin][h.index]); }
 
-  const Item& item(const Handle& h) const { return bins_[h.bin][h.index].item; }
+  const Item& item(const Handle& h) const { return bins_[h.bin][h.index]; }
 
   /// marks the fragment for removal at `end_batch()`; false if it was already marked in this batch
   bool take(const Handle& h)
   {
-    double& a = bins_[h.bin][h.index].area;
-    if(!(a > 0)) return false;
-    a = -a;
+    const std::uint64_t key = (std::uint64_t(h.bin) << 32 | h.index) + 1; // never 0, the empty mark
+    if(4 * (taken_.size() + 1) > taken_set_.size()) {
+      taken_set_.assign(taken_set_.empty() ? 64 : 2 * taken_set_.size(), 0);
+      for(const Handle& t : taken_) insert_key((std::uint64_t(t.bin) << 32 | t.index) + 1);
+    }
+    if(!insert_key(key)) return false;
     taken_.push_back(h);
     return true;
   }
@@ -127,20 +136,61 @@ public:
       return a.bin != b.bin ? a.bin < b.bin : a.index > b.index;
     });
     for(const Handle& h : taken_) {
-      std::vector<Entry>& bin = bins_[h.bin];
+      Chunked_array& bin = bins_[h.bin];
       bin[h.index] = bin.back();
       bin.pop_back();
     }
+    std::fill(taken_set_.begin(), taken_set_.end(), std::uint64_t(0));
     size_ -= taken_.size();
     taken_.clear();
   }
 
 private:
-  struct Entry
+  // a growable array in chunks of 256: indexing reads the chunk's address (the chunk tables are
+  // small and stay in cache), then the item
+  class Chunked_array
   {
-    Item item;
-    double area;
+  public:
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    Item& operator[](std::size_t i) { return chunks_[i >> shift][i & (chunk - 1)]; }
+    const Item& operator[](std::size_t i) const { return chunks_[i >> shift][i & (chunk - 1)]; }
+    Item& back() { return (*this)[size_ - 1]; }
+    void push_back(const Item& x)
+    {
+      if(size_ == chunks_.size() * chunk) chunks_.emplace_back(new Item[chunk]);
+      (*this)[size_++] = x;
+    }
+    void pop_back()
+    {
+      --size_;
+      // keep one empty chunk in reserve, so that a bin at a chunk boundary does not allocate and
+      // free a chunk at each push and pop
+      if(chunks_.size() * chunk >= size_ + 2 * chunk) chunks_.pop_back();
+    }
+
+  private:
+    static constexpr std::size_t shift = 8, chunk = std::size_t(1) << shift;
+    std::vector<std::unique_ptr<Item[]>> chunks_;
+    std::size_t size_ = 0;
   };
+
+  // the set of the keys of the taken handles, by open addressing in taken_set_ (0: empty slot)
+  std::size_t slot_of(std::uint64_t key) const
+  {
+    const std::size_t mask = taken_set_.size() - 1;
+    std::size_t k = std::size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+    while(taken_set_[k] != 0 && taken_set_[k] != key) k = (k + 1) & mask;
+    return k;
+  }
+  // false if the key was there already
+  bool insert_key(std::uint64_t key)
+  {
+    const std::size_t k = slot_of(key);
+    if(taken_set_[k] == key) return false;
+    taken_set_[k] = key;
+    return true;
+  }
 
   // count_b * 2^-(b - first_); a table spares the ldexp call for the bins in use
   double weight(std::size_t b) const
@@ -168,12 +218,13 @@ private:
   }
 
   double max_area_;
-  std::vector<std::vector<Entry>> bins_;
+  std::vector<Chunked_array> bins_;
   std::vector<double> bounds_; // bin_bound(b), so that a pick calls no ldexp
   std::size_t first_ = 0, last_ = 0; // the non-empty bins are among [first_, last_]
   std::size_t size_ = 0;
   std::vector<double> cumulative_;   // running sums of the weights of bins first_.. in this batch
   std::vector<Handle> taken_;
+  std::vector<std::uint64_t> taken_set_; // a power of two in size, at most a quarter full
 };
 
 } // namespace internal

@@ -42,6 +42,13 @@ template <class Traits>
 struct Has_prefetch<Traits, std::void_t<decltype(std::declval<const Traits&>().prefetch(
                                 std::declval<const typename Traits::Fragment&>()))>> : std::true_type {};
 
+/// whether a model offers the optional `level(fragment)`
+template <class Traits, class = void>
+struct Has_level : std::false_type {};
+template <class Traits>
+struct Has_level<Traits, std::void_t<decltype(std::declval<const Traits&>().level(
+                             std::declval<const typename Traits::Fragment&>()))>> : std::true_type {};
+
 /// what a run did, for tests and benchmarks
 struct Engine_statistics
 {
@@ -104,7 +111,7 @@ public:
     Active_fragment_pool<Item> pool(max_area);
     for(const Fragment& f : roots) {
       const double a = traits_.area(f);
-      if(a > 0) pool.push(Item{f, 0}, a);
+      if(a > 0) pool.push(make_item(f, 0), a);
     }
     roots = std::vector<Fragment>();
 
@@ -138,17 +145,14 @@ public:
         d.u = rng.uniform();
         pool.prefetch(d.handle);
       }
-      std::size_t m = 0;
-      for(const Dart& d : darts) // the pool's rejection step: a refused draw is no dart
-        if(pool.accepts(d.handle, d.u)) {
-          darts[m] = d;
-          darts[m].item = pool.item(d.handle);
-          prefetch_fragment(darts[m].item.fragment);
-          ++m;
-        }
-      darts.resize(m);
-      m = 0;
       for(Dart& d : darts) {
+        d.item = pool.item(d.handle);
+        prefetch_fragment(d.item.fragment);
+      }
+      std::size_t m = 0;
+      for(Dart& d : darts) {
+        // the pool's rejection step: a refused draw is no dart
+        if(!pool.accepts(d.handle, traits_.area(d.item.fragment), d.u)) continue;
         d.sample = traits_.random_sample(d.item.fragment, rng);
         if(!d.sample) continue; // a rejection step in the model refused the dart
         d.point = traits_.point(*d.sample);
@@ -190,7 +194,8 @@ public:
           stats.darts_on_covered += !d.accepted;
           continue;
         }
-        if(d.item.depth >= max_depth_) {
+        const int depth = depth_of(d.item);
+        if(depth >= max_depth_) {
           ++stats.dropped_at_max_depth;
           continue;
         }
@@ -200,7 +205,7 @@ public:
         for(const Fragment& c : children) {
           const double a = traits_.area(c);
           if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around)) {
-            pool.push(Item{c, static_cast<unsigned char>(d.item.depth + 1)}, a);
+            pool.push(make_item(c, depth + 1), a);
             kept = true;
           }
         }
@@ -212,11 +217,30 @@ public:
   }
 
 private:
-  struct Item
+  // a fragment and its number of splits from its root, unless the model keeps that number itself
+  template <bool model_keeps_level, class = void>
+  struct Item_t
   {
     Fragment fragment;
     unsigned char depth;
   };
+  template <class Dummy>
+  struct Item_t<true, Dummy>
+  {
+    Fragment fragment;
+  };
+  typedef Item_t<Has_level<Traits>::value> Item;
+
+  Item make_item(const Fragment& f, int depth) const
+  {
+    if constexpr(Has_level<Traits>::value) return Item{f};
+    else return Item{f, static_cast<unsigned char>(depth)};
+  }
+  int depth_of(const Item& item) const
+  {
+    if constexpr(Has_level<Traits>::value) return int(traits_.level(item.fragment));
+    else return item.depth;
+  }
 
   typedef Active_fragment_pool<Item> Pool;
 
