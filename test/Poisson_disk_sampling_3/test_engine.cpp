@@ -365,7 +365,12 @@ TEST(TriangleFragments, UnionCoverageIsExactAtAHoleOfAnySize)
         return P{{origin[0] + a * x[0] + b * y[0] + c * z[0], origin[1] + a * x[1] + b * y[1] + c * z[1],
                   origin[2] + a * x[2] + b * y[2] + c * z[2]}};
       };
-      const P corner[3] = {at(-0.05, -0.04, 0), at(0.06, -0.03, 0), at(-0.01, 0.07, 0)};
+      // a triangle of size 0.1, and one of size 2e-9 around the hole: there the slack of the cheap
+      // proof's convexity argument (about size^2 = 4e-18) is below the depth of every hole, so that
+      // only its rounding bound keeps it from claiming coverage
+      for(double size : {1., 2e-8}) {
+      const P corner[3] = {at(-0.05 * size, -0.04 * size, 0), at(0.06 * size, -0.03 * size, 0),
+                           at(-0.01 * size, 0.07 * size, 0)};
       for(double delta : {-1e-3, 1e-3, 1e-6, 1e-9, 1e-12, 1e-14, 1e-15, 4e-16, 2e-16, 1e-16}) {
        for(int turn = 0; turn < 8; ++turn) {
         const double height = 0.2, reach = R * (1 + delta), planar = std::sqrt(reach * reach - height * height);
@@ -389,17 +394,20 @@ TEST(TriangleFragments, UnionCoverageIsExactAtAHoleOfAnySize)
         const EK::Point_3* hole = o ? boost::get<EK::Point_3>(&*o) : nullptr;
         ASSERT_NE(hole, nullptr);
         const EK::Triangle_3 triangle(ek(corner[0]), ek(corner[1]), ek(corner[2]));
-        ASSERT_TRUE(triangle.has_on(*hole));
+        if(size == 1.) ASSERT_TRUE(triangle.has_on(*hole));
+        if(!triangle.has_on(*hole)) continue; // the rounding of the centres moved it off the tiny one
         if(CGAL::squared_distance(*hole, ek(centers[0])) <= EK::FT(R * R)) {
           continue; // no hole left in the stored doubles: any answer is right
         }
         ++holes;
-        EXPECT_FALSE(says) << "a hole at relative depth " << delta << " (offset " << offset << ", tilt " << tilt << ")";
+        EXPECT_FALSE(says) << "a hole at relative depth " << delta << " (offset " << offset << ", tilt "
+                           << tilt << ", size " << size << ")";
        }
+      }
       }
     }
   }
-  EXPECT_GE(holes, 200); // most survive the rounding of the centres
+  EXPECT_GE(holes, 400); // most survive the rounding of the centres
 }
 
 // Near-tangent and near-degenerate configurations at random: a claim of coverage is checked on a

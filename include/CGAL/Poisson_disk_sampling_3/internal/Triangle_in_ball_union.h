@@ -28,6 +28,10 @@ namespace internal {
 /// can only turn a `true` into a `false`, never the reverse. (With balls of different radii the
 /// bisector planes become radical planes and the same argument holds.)
 ///
+/// A cheaper proof comes first (`by_convexity`): it settles most covered triangles with a dozen
+/// multiplications per pair of balls and no interval arithmetic; the candidate-point test below
+/// runs only when it fails.
+///
 /// Rigour: the computation is a template on the number type. With `double` it is a fast filter;
 /// with `CGAL::Interval_nt<false>` every quantity is an interval that holds the exact value, and the
 /// answer is `true` only if every comparison is certain; near-degenerate configurations (an edge
@@ -84,6 +88,7 @@ public:
       kept[k++] = Point{{c[0], c[1], c[2]}};
     }
     if(k == 0) return false;
+    if(by_convexity(corner, kept, k, r)) return true;
     if(!decide<double>(corner, kept, k, r, 0.)) return false;
     typedef CGAL::Interval_nt<false> I;
     typename I::Protector protect; // rounding towards +infinity while the intervals are computed
@@ -91,6 +96,82 @@ public:
   }
 
 private:
+  // The cheap proof. g_i(x) = |x - c_i|^2 - r^2 is convex, so on T, g_i(x) <= sum_k l_k g_i(v_k) for
+  // the barycentric coordinates l of x. If weights m_i >= 0 make sum_i m_i g_i(v_k) < 0 at the three
+  // corners v_k, then sum_i m_i g_i(x) < 0 on all of T, so some g_i(x) < 0: every point of T is
+  // strictly inside a ball. The best weights solve a linear program whose optimum has at most three
+  // positive weights (three corner constraints and the normalisation), so trying every pair and
+  // triple of balls finds them; a weight vector is accepted only if the corner sums are negative by
+  // more than a bound on their rounding error. Blind only where T's points are within about
+  // diameter(T)^2 / 2r of the union's boundary: the full test below handles those.
+  static bool by_convexity(const Point (&corner)[3], const Point* centers, std::size_t k, double r)
+  {
+    const double r2 = r * r;
+    double a[max_balls][3], m2[max_balls][3]; // g_i(v_k) and |v_k - c_i|^2
+    for(std::size_t i = 0; i < k; ++i)
+      for(int c = 0; c < 3; ++c) {
+        const double x = corner[c][0] - centers[i][0], y = corner[c][1] - centers[i][1],
+                     z = corner[c][2] - centers[i][2];
+        m2[i][c] = x * x + y * y + z * z;
+        a[i][c] = m2[i][c] - r2;
+      }
+    // sum_i w_i a_i(v_c) < 0 at every corner, by more than the rounding of a and of the sums: each a
+    // is within 6 units in the last place of |v - c|^2 + r^2, each sum of at most 3 weighted terms
+    // within 4 more; 1e-14 is more than twice what that makes.
+    auto proves = [&](const std::size_t* idx, const double* w, std::size_t n) {
+      for(int c = 0; c < 3; ++c) {
+        double sum = 0, bound = 0;
+        for(std::size_t t = 0; t < n; ++t) {
+          sum += w[t] * a[idx[t]][c];
+          bound += w[t] * (m2[idx[t]][c] + r2);
+        }
+        if(!(sum + 1e-14 * bound < 0)) return false;
+      }
+      return true;
+    };
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j) {
+        // w a_i + (1 - w) a_j at corner c is a line in w; the best w is where two of them cross
+        const std::size_t idx[2] = {i, j};
+        for(int c = 0; c < 3; ++c)
+          for(int e = c + 1; e < 3; ++e) {
+            const double den = (a[i][c] - a[j][c]) - (a[i][e] - a[j][e]);
+            if(!(den != 0)) continue;
+            const double w = (a[j][e] - a[j][c]) / den;
+            if(!(w > 0 && w < 1)) continue;
+            const double ws[2] = {w, 1 - w};
+            if(proves(idx, ws, 2)) return true;
+          }
+        for(std::size_t l = j + 1; l < k; ++l) {
+          // the weights that make the three corner sums equal: solve A w = (1, 1, 1), A[c][t] = a_t(v_c)
+          const std::size_t idx3[3] = {i, j, l};
+          double A[3][3];
+          for(int c = 0; c < 3; ++c)
+            for(int t = 0; t < 3; ++t) A[c][t] = a[idx3[t]][c];
+          const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                             A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                             A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+          if(!(det != 0)) continue;
+          double w[3];
+          for(int t = 0; t < 3; ++t) { // Cramer: column t replaced by ones
+            double B[3][3];
+            for(int c = 0; c < 3; ++c)
+              for(int q = 0; q < 3; ++q) B[c][q] = q == t ? 1. : A[c][q];
+            w[t] = (B[0][0] * (B[1][1] * B[2][2] - B[1][2] * B[2][1]) -
+                    B[0][1] * (B[1][0] * B[2][2] - B[1][2] * B[2][0]) +
+                    B[0][2] * (B[1][0] * B[2][1] - B[1][1] * B[2][0])) / det;
+          }
+          // the corner sums are all 1 with these weights: with all weights negative, their opposites
+          // make the sums -1, the proof sought; otherwise the best weights, if any, use fewer balls
+          // (the pairs above)
+          if(!(w[0] < 0 && w[1] < 0 && w[2] < 0)) continue;
+          for(double& x : w) x = -x;
+          if(proves(idx3, w, 3)) return true;
+        }
+      }
+    return false;
+  }
+
   template <class NT>
   struct V
   {
