@@ -29,7 +29,7 @@ struct Sampling_statistics
   /// after the fragment was made: a dart is how the engine finds out (about half of all darts)
   std::size_t darts_on_covered_fragments = 0;
   /// the most fragments active at once in the last run: what the engine's pool of fragments holds at
-  /// its largest (for triangles, 40 bytes each)
+  /// its largest (for triangles, 24 bytes each)
   std::size_t peak_active_fragments = 0;
 };
 
