@@ -162,11 +162,11 @@ public:
       }
       darts.resize(m);
       stats.darts += m;
-      for(const Dart& d : darts) buckets.prefetch_header(d.cell);
       for(Dart& d : darts) {
         d.bucket = buckets.bucket(d.cell);
-        Neighbor_buckets::prefetch_points(d.bucket);
+        Neighbor_buckets::prefetch_header(d.bucket);
       }
+      for(const Dart& d : darts) Neighbor_buckets::prefetch_points(d.bucket);
       for(Dart& d : darts) d.free = is_free(d.bucket, d.point);
 
       accepted.clear();

@@ -60,12 +60,12 @@ public:
   const std::vector<Point>* bucket(const Point& p) const { return bucket(cell(p)); }
 
   /// The query of a cell makes three dependent memory accesses: the hash slot, the bucket's header,
-  /// its points. These start one of them without waiting, so that a batch of queries overlaps them.
+  /// its points. These start one of them without waiting, so that a batch of queries overlaps them:
+  /// `prefetch_slot` before `bucket()`, `prefetch_header` on its result, then `prefetch_points`.
   void prefetch_slot(const Cell& c) const { cells_.prefetch(c.x, c.y, c.z); }
-  void prefetch_header(const Cell& c) const
+  static void prefetch_header(const std::vector<Point>* bucket)
   {
-    const std::uint32_t b = cells_.find(c.x, c.y, c.z);
-    if(b != Cell_hash_table::none) internal::prefetch(&buckets_[b]);
+    if(bucket) internal::prefetch(bucket);
   }
   static void prefetch_points(const std::vector<Point>* bucket)
   {
