@@ -6,6 +6,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
 
 #include <algorithm>
@@ -141,7 +142,7 @@ public:
   }
 
   /// area of a fragment: a quarter of its parent's
-  double area(const Fragment& f) const { return faces_[f.face].area * power_of_two(-2 * int(f.level)); }
+  double area(const Fragment& f) const { return faces_[f.face].area * internal::power_of_half(2 * std::size_t(f.level)); }
 
   /// a point uniformly distributed on the fragment, never refused
   template <class RandomGenerator>
@@ -237,19 +238,7 @@ private:
   }
 
   // the signed leg length in parameter space
-  static double leg(const Fragment& f) { return (f.inverted ? -1. : 1.) * power_of_two(-int(f.level)); }
-
-  // 2^e for -510 <= e <= 0 (a level is at most 255), from a table: std::ldexp was 6% of the sampling
-  // time. Multiplying by an exact power of two rounds once, like ldexp, even into subnormals.
-  static double power_of_two(int e)
-  {
-    static const std::array<double, 511> table = [] {
-      std::array<double, 511> t{};
-      for(int i = 0; i < 511; ++i) t[std::size_t(i)] = std::ldexp(1., -i);
-      return t;
-    }();
-    return table[std::size_t(-e)];
-  }
+  static double leg(const Fragment& f) { return (f.inverted ? -1. : 1.) * internal::power_of_half(f.level); }
 
   static Point at(const Face& f, double u, double v)
   {

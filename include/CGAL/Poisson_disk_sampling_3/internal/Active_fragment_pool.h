@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_ACTIVE_FRAGMENT_POOL_H
 
 #include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
 
 #include <CGAL/assertions.h>
@@ -117,12 +118,11 @@ public:
   /// marks the fragment for removal at `end_batch()`; false if it was already marked in this batch
   bool take(const Handle& h)
   {
-    const std::uint64_t key = (std::uint64_t(h.bin) << 32 | h.index) + 1; // never 0, the empty mark
     if(4 * (taken_.size() + 1) > taken_set_.size()) {
       taken_set_.assign(taken_set_.empty() ? 64 : 2 * taken_set_.size(), 0);
-      for(const Handle& t : taken_) insert_key((std::uint64_t(t.bin) << 32 | t.index) + 1);
+      for(const Handle& t : taken_) insert_key(key_of(t));
     }
-    if(!insert_key(key)) return false;
+    if(!insert_key(key_of(h))) return false;
     taken_.push_back(h);
     return true;
   }
@@ -175,6 +175,8 @@ private:
     std::size_t size_ = 0;
   };
 
+  static std::uint64_t key_of(const Handle& h) { return (std::uint64_t(h.bin) << 32 | h.index) + 1; } // never 0
+
   // the set of the keys of the taken handles, by open addressing in taken_set_ (0: empty slot)
   std::size_t slot_of(std::uint64_t key) const
   {
@@ -192,17 +194,12 @@ private:
     return true;
   }
 
-  // count_b * 2^-(b - first_); a table spares the ldexp call for the bins in use
+  // count_b * 2^-(b - first_), exact (far below first_, ldexp keeps a subnormal that 2^-k alone would lose)
   double weight(std::size_t b) const
   {
-    static const std::array<double, 64> power_of_half = [] {
-      std::array<double, 64> t{};
-      for(std::size_t i = 0; i < t.size(); ++i) t[i] = std::ldexp(1., -int(i));
-      return t;
-    }();
     const std::size_t k = b - first_;
     const double count = double(bins_[b].size());
-    return k < power_of_half.size() ? count * power_of_half[k] : std::ldexp(count, -int(k));
+    return k < 511 ? count * power_of_half(k) : std::ldexp(count, -int(k));
   }
 
   double bin_bound(std::size_t b) const { return std::ldexp(max_area_, -int(b)); }
