@@ -142,6 +142,22 @@ TEST(ActiveFragmentPool, BatchRemovesExactlyTheTakenOnes)
     pool.end_batch();
     EXPECT_EQ(pool.size(), expected.size());
   }
+  // batches that take most of a small pool: taken entries at the end of the bins, and entries
+  // refilled in this batch that end up last
+  for(int batch = 0; batch < 40; ++batch) {
+    for(int i = 0; i < 30; ++i) {
+      pool.push(next, 0.5 + 0.5 * rng.uniform());
+      expected.insert(next++);
+    }
+    pool.begin_batch();
+    std::vector<Pool::Handle> drawn;
+    const std::size_t n = pool.size();
+    for(std::size_t i = 0; i < n; ++i) drawn.push_back(pool.draw(rng));
+    for(const Pool::Handle& h : drawn)
+      if(pool.take(h)) expected.erase(expected.find(pool.item(h)));
+    pool.end_batch();
+    EXPECT_EQ(pool.size(), expected.size());
+  }
   std::multiset<int> left;
   while(!pool.empty()) {
     pool.begin_batch();

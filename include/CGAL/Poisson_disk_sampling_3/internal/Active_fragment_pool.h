@@ -130,15 +130,16 @@ public:
   /// removes the fragments taken since `begin_batch()`
   void end_batch()
   {
-    // by bin, then from the highest index down: moving a bin's last entry into a freed place never
-    // moves one that is still to be removed
-    std::sort(taken_.begin(), taken_.end(), [](const Handle& a, const Handle& b) {
-      return a.bin != b.bin ? a.bin < b.bin : a.index > b.index;
-    });
+    // Each taken entry is replaced by the bin's last entry that is not taken; taken entries at the
+    // end are dropped first, and a handle beyond the end was one of them. No sort: the taken set
+    // answers whether an entry is taken, and an entry refilled with a live one leaves the set.
     for(const Handle& h : taken_) {
       Chunked_array& bin = bins_[h.bin];
+      while(!bin.empty() && is_taken(Handle{h.bin, std::uint32_t(bin.size() - 1)})) bin.pop_back();
+      if(h.index >= bin.size()) continue;
       bin[h.index] = bin.back();
       bin.pop_back();
+      untake(h);
     }
     std::fill(taken_set_.begin(), taken_set_.end(), std::uint64_t(0));
     size_ -= taken_.size();
@@ -175,7 +176,8 @@ private:
     std::size_t size_ = 0;
   };
 
-  static std::uint64_t key_of(const Handle& h) { return (std::uint64_t(h.bin) << 32 | h.index) + 1; } // never 0
+  // never 0, and bit 63 is never set (there are far fewer than 2^31 bins)
+  static std::uint64_t key_of(const Handle& h) { return (std::uint64_t(h.bin) << 32 | h.index) + 1; }
 
   // the set of the keys of the taken handles, by open addressing in taken_set_ (0: empty slot)
   std::size_t slot_of(std::uint64_t key) const
@@ -184,6 +186,17 @@ private:
     std::size_t k = std::size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
     while(taken_set_[k] != 0 && taken_set_[k] != key) k = (k + 1) & mask;
     return k;
+  }
+  bool is_taken(const Handle& h) const
+  {
+    const std::uint64_t key = key_of(h);
+    return taken_set_[slot_of(key)] == key;
+  }
+  // leaves a mark that matches no key (bit 63 is never set in one) and keeps later keys reachable
+  void untake(const Handle& h)
+  {
+    const std::uint64_t key = key_of(h);
+    taken_set_[slot_of(key)] = key | std::uint64_t(1) << 63;
   }
   // false if the key was there already
   bool insert_key(std::uint64_t key)
