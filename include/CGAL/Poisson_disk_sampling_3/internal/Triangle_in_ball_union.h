@@ -4,13 +4,11 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
 
-#include <CGAL/Interval_nt.h>
-#include <CGAL/Uncertain.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace CGAL {
 namespace Poisson_disk_sampling_3 {
@@ -29,16 +27,15 @@ namespace internal {
 /// bisector planes become radical planes and the same argument holds.)
 ///
 /// A cheaper proof comes first (`by_convexity`): it settles most covered triangles with a dozen
-/// multiplications per pair of balls and no interval arithmetic; the candidate-point test below
-/// runs only when it fails.
+/// multiplications per pair of balls; the candidate-point test below runs only when it fails.
 ///
-/// Rigour: the computation is a template on the number type. With `double` it is a fast filter;
-/// with `CGAL::Interval_nt<false>` every quantity is an interval that holds the exact value, and the
-/// answer is `true` only if every comparison is certain; near-degenerate configurations (an edge
-/// parallel to a bisector plane through it, three centres whose bisectors do not meet in one point)
-/// answer `false`, and the engine then splits the fragment, which is always safe. Points are taken
-/// relative to the first corner (in interval arithmetic, so the translation is exact), which keeps
-/// intervals narrow far from the origin.
+/// Rigour: the candidate-point test is a template on the number type, and divides nowhere (a point is
+/// kept as a numerator and a denominator). With `double` it is a fast filter that drops most
+/// triangles that are not covered. With `Bounded`, a double that carries a bound of its rounding
+/// error, the answer is `true` only if every comparison is certain; near-degenerate configurations
+/// (an edge parallel to a bisector plane through it, three centres whose bisectors do not meet in one
+/// point) answer `false`, and the engine then splits the fragment, which is always safe. Points are
+/// taken relative to the first corner, which keeps the bounds small far from the origin.
 ///
 /// The triangle is given by the double corners computed by the model; the exact triangle's corners
 /// are within `corner_error` of them, so every point of the exact triangle is within `corner_error`
@@ -89,10 +86,8 @@ public:
     }
     if(k == 0) return false;
     if(by_convexity(corner, kept, k, r)) return true;
-    if(!decide<double>(corner, kept, k, r, 0.)) return false;
-    typedef CGAL::Interval_nt<false> I;
-    typename I::Protector protect; // rounding towards +infinity while the intervals are computed
-    return decide<I>(corner, kept, k, radius, corner_error);
+    if(!decide<double>(corner, kept, k, radius, corner_error)) return false;
+    return decide<Bounded>(corner, kept, k, radius, corner_error);
   }
 
 private:
@@ -172,6 +167,38 @@ private:
     return false;
   }
 
+  // A number computed from the inputs by additions, subtractions and multiplications only, with `a`
+  // the same computation on the absolute values of the inputs. Expanded into monomials, the computed
+  // v is the exact value with each monomial multiplied by at most n factors (1 + delta), |delta| <= u
+  // = 2^-53, where n counts the roundings on the way: an input's own rounding counts 1, a sum one more
+  // than the larger count of its terms, a product one more than the sum of the counts of its factors.
+  // So |v - exact| <= gamma_n a, gamma_n = n u / (1 - n u) (Higham, Accuracy and Stability of
+  // Numerical Algorithms, 2nd ed., Lemma 3.1 and 3.4), and the computed a is at least (1 - gamma_n)
+  // times the exact one. The largest count in `decide` is about 40 (the squared distance from a
+  // centre of the point equidistant from three centres): gamma_40 < 4.5e-15, and 1e-13 a bounds the
+  // error with room to spare. The coordinates are scaled by a power of two near 1 / radius, so that
+  // values stay far from underflow and overflow; the 1e-280 covers what a subnormal could lose.
+  struct Bounded
+  {
+    double v, a;
+    Bounded operator+(const Bounded& o) const { return {v + o.v, a + o.a}; }
+    Bounded operator-(const Bounded& o) const { return {v - o.v, a + o.a}; }
+    Bounded operator*(const Bounded& o) const { return {v * o.v, a * o.a}; }
+  };
+
+  // Inputs and constants, and sign tests: plain for double (the filter), only what the error bound
+  // makes certain for Bounded (the proof).
+  template <class NT>
+  static NT number(double x)
+  {
+    if constexpr(std::is_same_v<NT, double>) return x;
+    else return NT{x, std::abs(x)};
+  }
+  static bool negative(double x) { return x < 0; }
+  static bool positive(double x) { return x > 0; }
+  static bool negative(const Bounded& x) { return x.v < -(1e-13 * x.a + 1e-280); }
+  static bool positive(const Bounded& x) { return x.v > 1e-13 * x.a + 1e-280; }
+
   template <class NT>
   struct V
   {
@@ -183,67 +210,65 @@ private:
     V cross(const V& o) const { return V{y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
   };
 
-  // the point minus the origin, as NT: exact for intervals (the difference is enclosed)
-  template <class NT>
-  static V<NT> relative(const Point& p, const Point& origin)
-  {
-    return V<NT>{NT(p[0]) - NT(origin[0]), NT(p[1]) - NT(origin[1]), NT(p[2]) - NT(origin[2])};
-  }
-
+  // The candidate-point test of the class comment. Without division: each candidate point is kept as
+  // N / den, it is strictly inside ball i iff |N - c_i den|^2 < r^2 den^2, and outside an edge of T
+  // by the sign of a polynomial times the sign of den. Any step that is not certain answers false.
   template <class NT>
   static bool decide(const Point (&corner)[3], const Point* centers, std::size_t k, double radius, double shrink)
   {
-    using CGAL::certainly;
     const Point& o = corner[0];
-    const NT rr = NT(radius) - NT(shrink);
+    int e;
+    std::frexp(radius, &e);
+    const double scale = std::ldexp(1., -e); // exact; the scaled radius is in [1/2, 1)
+    auto rel = [&](const Point& p) {
+      return V<NT>{number<NT>((p[0] - o[0]) * scale), number<NT>((p[1] - o[1]) * scale),
+                   number<NT>((p[2] - o[2]) * scale)};
+    };
+    const NT rr = number<NT>((radius - shrink) * scale);
     const NT r2 = rr * rr;
+    const NT zero = number<NT>(0), one = number<NT>(1), half = number<NT>(0.5);
     V<NT> c[max_balls];
     NT c2[max_balls]; // |c_i|^2 / 2: the bisector plane of i and j is x . (c_j - c_i) = c2[j] - c2[i]
     for(std::size_t i = 0; i < k; ++i) {
-      c[i] = relative<NT>(centers[i], o);
-      c2[i] = c[i].dot(c[i]) / NT(2);
+      c[i] = rel(centers[i]);
+      c2[i] = c[i].dot(c[i]) * half;
     }
-    const V<NT> v[3] = {V<NT>{NT(0), NT(0), NT(0)}, relative<NT>(corner[1], o), relative<NT>(corner[2], o)};
+    const V<NT> v[3] = {V<NT>{zero, zero, zero}, rel(corner[1]), rel(corner[2])};
     const V<NT> n = v[1].cross(v[2]); // T's plane is n . x = 0
 
     // strictly inside some ball; the ball that held the last point is tried first, since the
     // points tested one after the other are close
     std::size_t last = 0;
-    auto covered = [&](const V<NT>& p) {
+    auto covered = [&](const V<NT>& N, const NT& den) {
+      const NT d2 = r2 * den * den;
       for(std::size_t step = 0; step < k; ++step) {
         const std::size_t m = (last + step) % k;
-        const V<NT> w = p - c[m];
-        if(certainly(w.dot(w) < r2)) {
+        const V<NT> w = N - c[m] * den;
+        if(negative(w.dot(w) - d2)) {
           last = m;
           return true;
         }
       }
       return false;
     };
-    auto outside_T = [&](const V<NT>& p) {
-      for(int e = 0; e < 3; ++e)
-        if(certainly((v[(e + 1) % 3] - v[e]).cross(p - v[e]).dot(n) < NT(0))) return true;
-      return false;
-    };
 
     for(const V<NT>& p : v)
-      if(!covered(p)) return false;
+      if(!covered(p, one)) return false;
 
     // edges meet bisector planes
-    for(int e = 0; e < 3; ++e) {
-      const V<NT>& p = v[e];
-      const V<NT> d = v[(e + 1) % 3] - p;
+    for(int ed = 0; ed < 3; ++ed) {
+      const V<NT>& p = v[ed];
+      const V<NT> d = v[(ed + 1) % 3] - p;
       for(std::size_t i = 0; i < k; ++i)
         for(std::size_t j = i + 1; j < k; ++j) {
           const V<NT> m = c[j] - c[i];
           const NT h = c2[j] - c2[i];
           // signed offsets of the edge's ends from the plane: no crossing if both are strictly on one side
           const NT s0 = p.dot(m) - h, s1 = s0 + d.dot(m);
-          if((certainly(s0 > NT(0)) && certainly(s1 > NT(0))) || (certainly(s0 < NT(0)) && certainly(s1 < NT(0))))
-            continue;
+          if((positive(s0) && positive(s1)) || (negative(s0) && negative(s1))) continue;
           const NT den = s0 - s1;
-          if(!certainly(den != NT(0))) return false; // the edge may lie in the plane
-          if(!covered(p + d * (s0 / den))) return false;
+          if(!positive(den) && !negative(den)) return false; // the edge may lie in the plane
+          if(!covered(p * den + d * s0, den)) return false;   // the point p + d s0 / den
         }
     }
 
@@ -256,10 +281,17 @@ private:
           const V<NT> m2 = c[l] - c[i];
           const NT h2 = c2[l] - c2[i];
           const NT det = n.dot(m1.cross(m2));
-          if(!certainly(det != NT(0))) return false; // the three bisectors may not meet in one point
-          const V<NT> x = (m2.cross(n) * h1 + n.cross(m1) * h2) * (NT(1) / det);
-          if(outside_T(x)) continue;
-          if(!covered(x)) return false;
+          const bool up = positive(det);
+          if(!up && !negative(det)) return false; // the three bisectors may not meet in one point
+          const V<NT> N = m2.cross(n) * h1 + n.cross(m1) * h2; // the point is N / det
+          bool outside = false;
+          for(int ed = 0; ed < 3 && !outside; ++ed) {
+            // ((v_e+1 - v_e) x (N / det - v_e)) . n < 0, multiplied by det^2
+            const NT side = (v[(ed + 1) % 3] - v[ed]).cross(N - v[ed] * det).dot(n);
+            outside = up ? negative(side) : positive(side);
+          }
+          if(outside) continue;
+          if(!covered(N, det)) return false;
         }
       }
     return true;
