@@ -2,12 +2,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The sphere: maximal Poisson-disk sets on several spheres, the area formula, uniformity, and the
-// coverage test that stays right near the poles where the paper's corner test fails.
+// coverage test that stays right near the poles where the paper's corner test fails, alone and for a
+// union of balls.
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <iterator>
+#include <limits>
+#include <vector>
 
 namespace {
 
@@ -158,6 +163,164 @@ TEST(SphereFragments, CoverageMatchesDenseEvaluation)
     if(traits.is_covered(f, c, worst * 1.01)) ++covered;
   }
   EXPECT_GT(covered, 1900);
+}
+
+// The largest distance from a point of the rectangle to the nearest centre, over a grid of
+// (grid + 1)^2 points in (theta, z) and (edge + 1) points along each edge: a lower bound of the
+// covering radius, which a finer grid brings closer.
+double farthest_on_grid(const Traits& traits, const Fragment& f, const std::vector<Traits::Point>& centers,
+                        int grid, int edge)
+{
+  const Traits::Point c = traits.center();
+  const double R = traits.radius();
+  auto nearest = [&](double theta, double z) {
+    const double r = std::sqrt(std::max(0., 1 - z * z));
+    const double x = c[0] + R * r * std::cos(theta), y = c[1] + R * r * std::sin(theta), w = c[2] + R * z;
+    double best = std::numeric_limits<double>::infinity();
+    for(const Traits::Point& q : centers)
+      best = std::min(best, (x - q[0]) * (x - q[0]) + (y - q[1]) * (y - q[1]) + (w - q[2]) * (w - q[2]));
+    return std::sqrt(best);
+  };
+  const double dt = f.theta1 - f.theta0, dz = f.z1 - f.z0;
+  double worst = 0;
+  for(int i = 0; i <= grid; ++i)
+    for(int j = 0; j <= grid; ++j) worst = std::max(worst, nearest(f.theta0 + dt * i / grid, f.z0 + dz * j / grid));
+  for(int i = 0; i <= edge; ++i) {
+    const double u = double(i) / edge;
+    worst = std::max({worst, nearest(f.theta0 + dt * u, f.z0), nearest(f.theta0 + dt * u, f.z1),
+                      nearest(f.theta0, f.z0 + dz * u), nearest(f.theta1, f.z0 + dz * u)});
+  }
+  return worst;
+}
+
+// The union test against a dense evaluation, on random configurations near the edge of being
+// covered: rectangles of many sizes, at all latitudes and often at a pole (where wide rectangles
+// bulge between their corners), 1 to 5 balls around each, some centres off the sphere, and a radius
+// within a few percent of the union's covering radius measured on a grid. Whenever
+// is_covered_by_union() says true, every point of a finer grid and of the edges must be within the
+// radius of a centre, and the radius must not be below the coarse grid's covering radius.
+TEST(SphereFragments, UnionCoverageIsSoundNearTheEdgeOfCoverage)
+{
+  const Traits spheres[2] = {Traits({{0.5, -1, 2}}, 1.5), Traits({{0, 0, 0}}, 1)};
+  PDS::internal::Random rng(11);
+  int proven = 0, useful = 0, useful_proven = 0, below = 0;
+  const int trials = 4000;
+  for(int trial = 0; trial < trials; ++trial) {
+    const Traits& traits = spheres[trial % 2];
+    const Traits::Point c = traits.center();
+    const double R = traits.radius();
+    // a rectangle of angular size s in phi, about as wide in theta (at most pi / 2)
+    const double s = std::pow(10., -3 + 2.5 * rng.uniform());
+    const double where = rng.uniform();
+    double phi0;
+    if(where < 0.2) phi0 = rng.uniform() < 0.3 ? 0. : rng.uniform() * 2 * s; // at the north pole
+    else if(where < 0.4) phi0 = pi - s - (rng.uniform() < 0.3 ? 0. : rng.uniform() * 2 * s); // south
+    else phi0 = rng.uniform() * (pi - s);
+    phi0 = std::max(0., phi0);
+    const double phi1 = std::min(pi, phi0 + s);
+    const double width = std::min(pi / 2, s * (0.5 + 1.5 * rng.uniform()) / std::max(std::sin(phi0 + 0.5 * s), s));
+    const double t0 = rng.uniform() * (2 * pi - width);
+    const Fragment f{t0, t0 + width, std::cos(phi1), std::cos(phi0)};
+
+    // centres around the rectangle: in its parameter box grown by half its size on each side, or,
+    // for a rectangle at a pole, anywhere around the pole (where a ball across the pole holds the
+    // corners of a wide rectangle, and its edges bulge out between them)
+    const bool polar = phi0 < s || phi1 > pi - s;
+    const bool around_pole = polar && rng.uniform() < 0.5;
+    const int n = (around_pole ? 1 : 2) + int(rng.uniform_index(4));
+    std::vector<Traits::Point> centers;
+    for(int i = 0; i < n; ++i) {
+      const double theta = around_pole ? 2 * pi * rng.uniform() : f.theta0 + width * (2 * rng.uniform() - 0.5);
+      const double phi = around_pole ? (phi0 < s ? 2 * s * rng.uniform() : pi - 2 * s * rng.uniform())
+                                     : std::clamp(phi0 + s * (2 * rng.uniform() - 0.5), 0., pi);
+      const double off = rng.uniform() < 0.3 ? 1 + 0.2 * s * (rng.uniform() - 0.5) : 1.;
+      const double r = off * R;
+      centers.push_back({{c[0] + r * std::sin(phi) * std::cos(theta), c[1] + r * std::sin(phi) * std::sin(theta),
+                          c[2] + r * std::cos(phi)}});
+    }
+    // half of the time just below the covering radius on the coarse grid: then any `true` is wrong
+    const double factor = rng.uniform() < 0.5 ? 0.97 + 0.09 * rng.uniform() : 0.99 + 0.01 * rng.uniform();
+    const double radius = farthest_on_grid(traits, f, centers, 60, 240) * factor;
+    const bool yes = traits.is_covered_by_union(f, centers, radius);
+    if(yes) {
+      ++proven;
+      const double fine = farthest_on_grid(traits, f, centers, 150, 3000);
+      EXPECT_LT(fine, radius) << "trial " << trial << ": proven covered, but a point is " << fine / radius
+                              << " radii from the nearest centre";
+      below += factor <= 1; // then the coarse grid itself has a point outside every ball
+    }
+    bool single = false;
+    for(const Traits::Point& q : centers) single = single || traits.is_covered(f, q, radius);
+    if(factor > 1.02 && !single) {
+      ++useful;
+      useful_proven += yes;
+    }
+  }
+  EXPECT_EQ(below, 0);
+  std::cout << "near the edge: " << proven << " of " << trials << " proven; " << useful_proven << " of the "
+            << useful << " covered with a 2% margin and by no single ball\n";
+  EXPECT_GT(proven, trials / 20) << "the soundness check needs positive answers";
+  EXPECT_GT(useful, 300);
+  EXPECT_GT(useful_proven, useful / 25);
+}
+
+// The union test where the engine uses it: rectangles of the engine's subdivision (children of the
+// octants, a few levels deep, at all latitudes and at the poles) near the samples of a maximal set,
+// with the samples within 2D of the rectangle as centres and radii of D or a little less. Sound as
+// above, and it must prove a good share (about 60% when written) of the rectangles that a dense
+// evaluation finds covered with a margin but that no single ball covers: these are the darts it
+// saves. The others hold a point where two of the spheres cross, or need four balls or more.
+TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
+{
+  const Traits traits({{0, 0, 0}}, 1);
+  const double d = 0.05;
+  std::vector<Point> points;
+  PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, 1), std::back_inserter(points),
+                     PDS::parameters::minimum_distance(d).random_seed(5));
+  PDS::internal::Random rng(12);
+  int proven = 0, useful = 0, useful_proven = 0;
+  const int trials = 2000;
+  std::vector<Fragment> octants;
+  traits.initial_fragments(std::back_inserter(octants));
+  for(int trial = 0; trial < trials; ++trial) {
+    // a rectangle of the engine's subdivision, level 5 to 9: about D to D / 16 across
+    Fragment f = octants[rng.uniform_index(8)];
+    const int level = 5 + int(rng.uniform_index(5));
+    for(int l = 0; l < level; ++l) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      f = children[rng.uniform_index(4)];
+    }
+    const Traits::Point m = traits.reference_point(f);
+    double reach = 0;
+    for(double theta : {f.theta0, f.theta1})
+      for(double z : {f.z0, f.z1}) {
+        const double r = std::sqrt(std::max(0., 1 - z * z));
+        reach = std::max(reach, std::hypot(r * std::cos(theta) - m[0], r * std::sin(theta) - m[1], z - m[2]));
+      }
+    std::vector<Traits::Point> centers;
+    for(const Point& p : points)
+      if(std::hypot(p.x() - m[0], p.y() - m[1], p.z() - m[2]) < 2 * d + reach)
+        centers.push_back({{p.x(), p.y(), p.z()}});
+    const double radius = d * (rng.uniform() < 0.5 ? 1. : 0.9 + 0.1 * rng.uniform());
+    const bool yes = traits.is_covered_by_union(f, centers, radius);
+    if(yes) {
+      ++proven;
+      const double fine = farthest_on_grid(traits, f, centers, 150, 3000);
+      EXPECT_LT(fine, radius) << "trial " << trial << ": proven covered, but a point is " << fine / radius
+                              << " radii from the nearest centre";
+    }
+    bool single = false;
+    for(const Traits::Point& q : centers) single = single || traits.is_covered(f, q, radius);
+    if(!single && farthest_on_grid(traits, f, centers, 60, 240) < radius / 1.02) {
+      ++useful;
+      useful_proven += yes;
+    }
+  }
+  std::cout << "among samples: " << proven << " of " << trials << " proven; " << useful_proven << " of the "
+            << useful << " covered with a 2% margin and by no single ball\n";
+  EXPECT_GT(useful, 200);
+  EXPECT_GT(useful_proven, useful / 3);
 }
 
 } // namespace

@@ -62,7 +62,8 @@ public:
   /// boundary between two balls is covered by their union but by neither alone; without this test
   /// the engine splits it, and throws a dart at each piece, until single balls cover the pieces. The
   /// engine calls it on children that no single ball covers, with the samples near the dart; a model
-  /// that does not define it gets single-ball tests only. `Triangle_fragment_traits_3` defines it.
+  /// that does not define it gets single-ball tests only. `Triangle_fragment_traits_3` and
+  /// `Sphere_fragment_traits_3` define it.
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const;
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <optional>
 
@@ -122,6 +123,221 @@ public:
     return min_dot(f, w) >= t + margin;
   }
 
+  /// Optional operation of `SurfaceFragmentTraits_3`: true only if every point of the rectangle is
+  /// strictly within `radius` of some point of `centers`, with a margin larger than the rounding
+  /// error. Covers the rectangles that straddle the boundary between two or three balls, which no
+  /// single ball holds (and those that one ball of `centers` holds: the engine tries single balls
+  /// only among the samples near the dart).
+  ///
+  /// Why a `true` is a proof: with x = c + R u on the sphere and w_i = s_i - c, the criterion of
+  /// ball i, g_i(x) = |x - s_i|^2 - radius^2 = R^2 + |w_i|^2 - radius^2 - 2 R u . w_i, is linear in
+  /// u. For weights m_i >= 0, sum_i m_i g_i = A - 2 R u . W with W = sum_i m_i w_i and
+  /// A = sum_i m_i (R^2 + |w_i|^2 - radius^2); if it is negative on the whole rectangle, then at
+  /// every point some g_i is negative. It is negative everywhere iff `min_dot(f, W)` > A / (2 R),
+  /// the test of `is_covered()` with W in place of w: one exact minimum per weight vector. (Seen in
+  /// space, with weights of sum 1: the weighted sum is the criterion of one virtual ball, centred at
+  /// the weighted mean of the centres, with squared radius radius^2 minus the weighted variance of
+  /// the centres, and that ball lies in the union. The test asks whether the rectangle lies in such
+  /// a ball.)
+  ///
+  /// The weights are searched on proxies, not with `min_dot()` (trigonometry): the four corners and
+  /// the middles of the four edges. The test answers `false` at once if a proxy is in no ball (about
+  /// half of the engine's calls end at the corners), and keeps only the balls that hold a proxy. It
+  /// then tries each ball alone, each pair of balls with the weight that minimises the largest proxy
+  /// sum, and each triple with the weights that equalise the sums at three corners. Only a weight
+  /// vector whose proxy sums are all negative is checked exactly, and the first that passes answers.
+  /// A subset of the balls always gives a correct answer, so the cheap filters need no care for
+  /// rounding.
+  ///
+  /// Limits: every virtual ball of a pair passes through the circle where the pair's two spheres
+  /// cross, so a rectangle that holds a point of that circle (covered there by a third ball) needs a
+  /// triple, and a rectangle that only four or more balls cover together is never proven; the engine
+  /// then splits it. Near the samples of a maximal set, about 40% of the covered rectangles that no
+  /// single ball covers are of this kind (test_sphere.cpp).
+  template <class PointRange>
+  bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
+  {
+    const double rad2 = radius * radius, base = r_ * r_ - rad2;
+    // the proxies, as points minus the sphere's centre: corners 0 to 3, then the middles of the
+    // edges, computed only if every corner is in a ball
+    double ct[3] = {std::cos(f.theta0), std::cos(f.theta1), 0}, st[3] = {std::sin(f.theta0), std::sin(f.theta1), 0};
+    double zs[3] = {f.z0, f.z1, 0.5 * (f.z0 + f.z1)}, rs[3];
+    for(int j = 0; j < 2; ++j) rs[j] = rho_of(zs[j]);
+    static constexpr int at_theta[proxies] = {0, 1, 0, 1, 2, 2, 0, 1}; // 2 is the middle
+    static constexpr int at_z[proxies] = {0, 0, 1, 1, 0, 1, 2, 2};
+    Point prox[proxies];
+    auto make = [&](int p) {
+      const int i = at_theta[p], j = at_z[p];
+      prox[p] = Point{{r_ * rs[j] * ct[i], r_ * rs[j] * st[i], r_ * zs[j]}};
+    };
+    for(int p = 0; p < 4; ++p) make(p);
+
+    // The centres minus the sphere's centre. For a proxy x = c + R u, g(x) = |x - s|^2 - radius^2 is
+    // R^2 + |w|^2 - radius^2 - 2 R u . w: a constant per ball and a dot product per proxy. (The
+    // proxies only guide the search, so that this form loses digits to cancellation does not matter.)
+    Point wc[max_union_centers];
+    double kc[max_union_centers];
+    std::size_t n = 0;
+    for(const auto& s : centers) {
+      if(n == max_union_centers) break; // fewer balls only make a `false` more likely
+      wc[n] = Point{{s[0] - c_[0], s[1] - c_[1], s[2] - c_[2]}};
+      kc[n] = base + squared_length(wc[n]);
+      ++n;
+    }
+    auto g = [&](std::size_t i, int p) { return kc[i] - 2 * dot(prox[p], wc[i]); };
+
+    // Most rectangles that reach this test have a corner in no ball: find out first.
+    double a[max_union_centers][proxies]; // g_i at the proxies
+    unsigned holds[max_union_centers];    // which proxies ball i holds, one bit each
+    for(std::size_t i = 0; i < n; ++i) {
+      holds[i] = 0;
+      for(int p = 0; p < 4; ++p) {
+        a[i][p] = g(i, p);
+        holds[i] |= unsigned(a[i][p] < 0) << p;
+      }
+    }
+    unsigned any = 0;
+    for(std::size_t i = 0; i < n; ++i) any |= holds[i];
+    if(any != 15) return false;
+
+    // The middles of the edges; the bisector of two longitudes less than pi apart is the direction
+    // of the sum of their unit vectors.
+    const double cx = ct[0] + ct[1], sy = st[0] + st[1], norm = std::sqrt(cx * cx + sy * sy);
+    ct[2] = cx / norm;
+    st[2] = sy / norm;
+    rs[2] = rho_of(zs[2]);
+    for(int p = 4; p < proxies; ++p) make(p);
+    // Only balls that reach near a corner can hold a middle of an edge: its centre is within radius
+    // plus e, the longest chord between corners, of a corner (with some room for the bulge of the
+    // edge), so g < 2 radius e + e^2 there.
+    double e2 = 0;
+    for(int p = 0; p < 4; ++p)
+      for(int q = p + 1; q < 4; ++q) e2 = (std::max)(e2, squared_length(Point{{prox[p][0] - prox[q][0],
+                                                          prox[p][1] - prox[q][1], prox[p][2] - prox[q][2]}}));
+    const double e = 1.5 * std::sqrt(e2), reach = 2 * radius * e + e * e;
+    // Keep the balls that hold a proxy: a ball that holds none only raises the proxy sums of any
+    // weight vector it enters. A weight vector can make the sum negative at a proxy only if one of
+    // its balls holds the proxy.
+    const unsigned all = (1u << proxies) - 1;
+    Point w[max_union_balls];
+    std::size_t k = 0;
+    any = 0;
+    for(std::size_t i = 0; i < n && k < max_union_balls; ++i) {
+      if(!((std::min)({a[i][0], a[i][1], a[i][2], a[i][3]}) < reach)) continue;
+      for(int p = 4; p < proxies; ++p) {
+        a[i][p] = g(i, p);
+        holds[i] |= unsigned(a[i][p] < 0) << p;
+      }
+      if(holds[i] == 0) continue;
+      w[k] = wc[i];
+      std::copy(a[i], a[i] + proxies, a[k]);
+      holds[k++] = holds[i];
+      any |= holds[k - 1];
+    }
+    if(any != all) return false; // a middle of an edge is in no ball
+
+    // The exact check of the weights m (>= 0) of the balls idx. Rounding, with u = eps / 2 the unit
+    // roundoff, S = sum m_i |w_i| and B = sum m_i (R^2 + |w_i|^2 + radius^2), in units of u . W:
+    // - w_i = s_i - c is computed within u |w_i|, which moves A / (2 R) and u . W by at most
+    //   u (S + B / R) together;
+    // - the sums W and A, of at most three products, are within 5 u S and 9 u B of their exact
+    //   values computed from the rounded w_i; the minimum of u . W over unit vectors moves by at most
+    //   the error of W;
+    // - min_dot() evaluates cos, sin (within an ulp) and rho = sqrt((1 - z)(1 + z)) (`rho_of`,
+    //   within 3 u relative; computed as sqrt(1 - z^2) it would be off by up to 2^-42 absolute near
+    //   a pole, about 1024 eps); with the products and the choice between an end and the trough
+    //   (which errs towards the smaller value, or off by the square of a rounding error), the
+    //   computed minimum is within 16 u |W| <= 16 u S of the exact one over the exact rectangle;
+    // - the final sum and division add 2 u B / (2 R).
+    // That is at most about (16 S + 4 B / R) eps; the margin takes 4096 eps (S + B / R), far more:
+    // a too large margin only costs a few `false` answers near tangency.
+    const double eps = std::numeric_limits<double>::epsilon();
+    auto proves = [&](const std::size_t* idx, const double* m, int count) {
+      Point W{{0, 0, 0}};
+      double A = 0, S = 0, B = 0;
+      for(int t = 0; t < count; ++t) {
+        const Point& wi = w[idx[t]];
+        const double wi2 = squared_length(wi);
+        for(int d = 0; d < 3; ++d) W[d] += m[t] * wi[d];
+        A += m[t] * (r_ * r_ + wi2 - rad2);
+        S += m[t] * std::sqrt(wi2);
+        B += m[t] * (r_ * r_ + wi2 + rad2);
+      }
+      const double margin = 4096 * eps * (S + B / r_);
+      return min_dot(f, W, ct[0], st[0], ct[1], st[1]) > A / (2 * r_) + margin;
+    };
+
+    // One ball may be enough: the engine tries single balls only among the samples near the dart,
+    // and a child that does not hold the dart can be covered by one of the others.
+    for(std::size_t i = 0; i < k; ++i) {
+      const double one = 1;
+      if(holds[i] == all && proves(&i, &one, 1)) return true;
+    }
+
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j) {
+        if((holds[i] | holds[j]) != all) continue;
+        // With weights (x, 1 - x), the sum at proxy p is the line a_j(p) + x (a_i(p) - a_j(p)); the
+        // largest of them is convex in x, smallest where a rising line crosses a falling one, and the
+        // value there is the largest of these crossings.
+        double best = -std::numeric_limits<double>::infinity(), x = -1;
+        for(int p = 0; p < proxies; ++p) {
+          const double up = a[i][p] - a[j][p];
+          if(!(up > 0)) continue;
+          for(int q = 0; q < proxies; ++q) {
+            const double down = a[i][q] - a[j][q];
+            if(!(down < 0)) continue;
+            const double xc = (a[j][q] - a[j][p]) / (up - down);
+            const double v = a[j][p] + xc * up;
+            if(v > best) { best = v; x = xc; }
+          }
+        }
+        if(!(x > 0 && x < 1)) continue; // the best weights use one ball, tried above
+        double worst = -std::numeric_limits<double>::infinity();
+        for(int p = 0; p < proxies; ++p) worst = (std::max)(worst, x * a[i][p] + (1 - x) * a[j][p]);
+        if(!(worst < 0)) continue;
+        const std::size_t idx[2] = {i, j};
+        const double m[2] = {x, 1 - x};
+        if(proves(idx, m, 2)) return true;
+      }
+
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j)
+        for(std::size_t l = j + 1; l < k; ++l) {
+          if((holds[i] | holds[j] | holds[l]) != all) continue;
+          const std::size_t idx[3] = {i, j, l};
+          // the weights that make the sums equal at three corners (all but corner `skip`): solve
+          // M m = (1, 1, 1), M[c][t] = g_t(corner c); with all weights negative, their opposites
+          // make the three sums -1
+          for(int skip = 0; skip < 4; ++skip) {
+            double M[3][3];
+            for(int c = 0, row = 0; c < 4; ++c) {
+              if(c == skip) continue;
+              for(int t = 0; t < 3; ++t) M[row][t] = a[idx[t]][c];
+              ++row;
+            }
+            const double det = det3(M[0], M[1], M[2]);
+            if(!(det != 0)) continue;
+            double m[3];
+            for(int t = 0; t < 3; ++t) { // Cramer: column t replaced by ones
+              double C[3][3];
+              for(int c = 0; c < 3; ++c)
+                for(int col = 0; col < 3; ++col) C[c][col] = col == t ? 1. : M[c][col];
+              m[t] = -det3(C[0], C[1], C[2]) / det;
+            }
+            if(!(m[0] > 0 && m[1] > 0 && m[2] > 0)) continue;
+            const double sum = m[0] + m[1] + m[2]; // scale to sum 1, for the reader: the proof needs no scale
+            for(double& x : m) x /= sum;
+            double worst = -std::numeric_limits<double>::infinity();
+            for(int p = 0; p < proxies; ++p)
+              worst = (std::max)(worst, m[0] * a[i][p] + m[1] * a[j][p] + m[2] * a[l][p]);
+            if(!(worst < 0)) continue;
+            if(proves(idx, m, 3)) return true;
+          }
+        }
+    return false;
+  }
+
   /// the paper's test, kept to show where it fails: true if the four corners are in the ball
   bool are_corners_covered(const Fragment& f, const Point& center, double radius) const
   {
@@ -149,11 +365,29 @@ public:
   /// @}
 
 private:
+  static constexpr std::size_t max_union_balls = 16;   // the triple loop is cubic; a subset is always correct
+  static constexpr std::size_t max_union_centers = 64; // the engine passes a dozen or so
+  static constexpr int proxies = 8;                    // corners and middles of edges
+
   static double pi() { return 3.14159265358979323846; }
+
+  static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  static double squared_length(const Point& a) { return dot(a, a); }
+  static double det3(const double* r0, const double* r1, const double* r2)
+  {
+    return r0[0] * (r1[1] * r2[2] - r1[2] * r2[1]) - r0[1] * (r1[0] * r2[2] - r1[2] * r2[0]) +
+           r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]);
+  }
+
+  // sqrt(1 - z^2) within 3 units of rounding, relative, for z in [-1, 1]: one of 1 - z and 1 + z is
+  // exact (Sterbenz) where the other is near 2, and both are within one unit elsewhere. (1 - z * z
+  // loses the rounding of z * z, which near a pole the square root turns into an absolute error of
+  // up to 2^-42.)
+  static double rho_of(double z) { return std::sqrt((std::max)(0., (1 - z) * (1 + z))); }
 
   Point at(double theta, double z) const
   {
-    const double rho = std::sqrt((std::max)(0., 1 - z * z));
+    const double rho = rho_of(z);
     return Point{{c_[0] + r_ * rho * std::cos(theta), c_[1] + r_ * rho * std::sin(theta), c_[2] + r_ * z}};
   }
 
@@ -164,15 +398,19 @@ private:
   // its minimum on an interval is at an end, or at its trough when the trough is inside.
   static double min_dot(const Fragment& f, const Point& w)
   {
+    return min_dot(f, w, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1), std::sin(f.theta1));
+  }
+  // the same, given the cosines and sines of theta0 and theta1
+  static double min_dot(const Fragment& f, const Point& w, double cos0, double sin0, double cos1, double sin1)
+  {
     const double wxy = std::sqrt(w[0] * w[0] + w[1] * w[1]);
-    double m = (std::min)(w[0] * std::cos(f.theta0) + w[1] * std::sin(f.theta0),
-                          w[0] * std::cos(f.theta1) + w[1] * std::sin(f.theta1));
+    double m = (std::min)(w[0] * cos0 + w[1] * sin0, w[0] * cos1 + w[1] * sin1);
     if(wxy > 0) {
       double away = std::atan2(-w[1], -w[0]); // longitude of -w, where the theta part is smallest
       if(away < 0) away += 2 * pi();
       if(f.theta0 <= away && away <= f.theta1) m = -wxy;
     }
-    auto g = [&](double z) { return m * std::sqrt((std::max)(0., 1 - z * z)) + w[2] * z; };
+    auto g = [&](double z) { return m * rho_of(z) + w[2] * z; };
     double result = (std::min)(g(f.z0), g(f.z1));
     const double k = std::sqrt(m * m + w[2] * w[2]);
     if(m < 0 && k > 0) {

@@ -182,7 +182,7 @@ public:
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: true only if the union of the balls of radius
-  /// `radius` around `centers` holds the fragment, proven with interval arithmetic (see
+  /// `radius` around `centers` holds the fragment, proven with a bound on every rounding error (see
   /// `internal/Triangle_in_ball_union.h`). Covers the fragments that straddle the boundary between
   /// two balls, which no single ball holds.
   template <class PointRange>
