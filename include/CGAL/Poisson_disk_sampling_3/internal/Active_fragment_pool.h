@@ -222,10 +222,12 @@ private:
     if(area >= max_area_) return 0;
     int b = std::ilogb(max_area_ / area);
     if(b < 0) b = 0;
-    while(b > 0 && area > bin_bound(std::size_t(b))) --b;
-    while(area <= bin_bound(std::size_t(b) + 1)) ++b;
+    while(b > 0 && area > bound(std::size_t(b))) --b;
+    while(area <= bound(std::size_t(b) + 1)) ++b;
     return std::size_t(b);
   }
+  // bin_bound(b), from the table when the bin exists
+  double bound(std::size_t b) const { return b < bounds_.size() ? bounds_[b] : bin_bound(b); }
 
   double max_area_;
   std::vector<Chunked_array> bins_;

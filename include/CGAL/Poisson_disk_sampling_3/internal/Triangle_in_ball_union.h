@@ -218,8 +218,9 @@ private:
   {
     const Point& o = corner[0];
     int e;
-    std::frexp(radius, &e);
-    const double scale = std::ldexp(1., -e); // exact; the scaled radius is in [1/2, 1)
+    // 2^-e for radius = m 2^e, m in [1/2, 1): the quotient is a power of two, so the division is
+    // exact (and cheaper than ldexp); the scaled radius is m
+    const double scale = std::frexp(radius, &e) / radius;
     auto rel = [&](const Point& p) {
       return V<NT>{number<NT>((p[0] - o[0]) * scale), number<NT>((p[1] - o[1]) * scale),
                    number<NT>((p[2] - o[2]) * scale)};
