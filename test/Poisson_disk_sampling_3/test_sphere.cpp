@@ -193,6 +193,22 @@ double farthest_on_grid(const Traits& traits, const Fragment& f, const std::vect
   return worst;
 }
 
+// A claim of coverage, checked on a fine grid and densely along the edges.
+void expect_claim_holds(const Traits& traits, const Fragment& f, const std::vector<Traits::Point>& centers,
+                        double radius, int trial)
+{
+  const double fine = farthest_on_grid(traits, f, centers, 150, 3000);
+  EXPECT_LT(fine, radius) << "trial " << trial << ": proven covered, but a point is " << fine / radius
+                          << " radii from the nearest centre";
+}
+
+bool covered_by_one(const Traits& traits, const Fragment& f, const std::vector<Traits::Point>& centers, double radius)
+{
+  for(const Traits::Point& q : centers)
+    if(traits.is_covered(f, q, radius)) return true;
+  return false;
+}
+
 // The union test against a dense evaluation, on random configurations near the edge of being
 // covered: rectangles of many sizes, at all latitudes and often at a pole (where wide rectangles
 // bulge between their corners), 1 to 5 balls around each, some centres off the sphere, and a radius
@@ -244,13 +260,10 @@ TEST(SphereFragments, UnionCoverageIsSoundNearTheEdgeOfCoverage)
     const bool yes = traits.is_covered_by_union(f, centers, radius);
     if(yes) {
       ++proven;
-      const double fine = farthest_on_grid(traits, f, centers, 150, 3000);
-      EXPECT_LT(fine, radius) << "trial " << trial << ": proven covered, but a point is " << fine / radius
-                              << " radii from the nearest centre";
+      expect_claim_holds(traits, f, centers, radius, trial);
       below += factor <= 1; // then the coarse grid itself has a point outside every ball
     }
-    bool single = false;
-    for(const Traits::Point& q : centers) single = single || traits.is_covered(f, q, radius);
+    const bool single = covered_by_one(traits, f, centers, radius);
     if(factor > 1.02 && !single) {
       ++useful;
       useful_proven += yes;
@@ -306,12 +319,9 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
     const bool yes = traits.is_covered_by_union(f, centers, radius);
     if(yes) {
       ++proven;
-      const double fine = farthest_on_grid(traits, f, centers, 150, 3000);
-      EXPECT_LT(fine, radius) << "trial " << trial << ": proven covered, but a point is " << fine / radius
-                              << " radii from the nearest centre";
+      expect_claim_holds(traits, f, centers, radius, trial);
     }
-    bool single = false;
-    for(const Traits::Point& q : centers) single = single || traits.is_covered(f, q, radius);
+    const bool single = covered_by_one(traits, f, centers, radius);
     if(!single && farthest_on_grid(traits, f, centers, 60, 240) < radius / 1.02) {
       ++useful;
       useful_proven += yes;
