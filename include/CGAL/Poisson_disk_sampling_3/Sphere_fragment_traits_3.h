@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_SPHERE_FRAGMENT_TRAITS_3_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/weights_of_three.h>
 
 #include <algorithm>
 #include <array>
@@ -306,26 +307,15 @@ public:
         for(std::size_t l = j + 1; l < k; ++l) {
           if((holds[i] | holds[j] | holds[l]) != all) continue;
           const std::size_t idx[3] = {i, j, l};
-          // the weights that make the sums equal at three corners (all but corner `skip`): solve
-          // M m = (1, 1, 1), M[c][t] = g_t(corner c); with all weights negative, their opposites
-          // make the three sums -1
+          // the weights that make the sums -1 at three corners (all but corner `skip`)
           for(int skip = 0; skip < 4; ++skip) {
-            double M[3][3];
+            double M[3][3], m[3];
             for(int c = 0, row = 0; c < 4; ++c) {
               if(c == skip) continue;
               for(int t = 0; t < 3; ++t) M[row][t] = a[idx[t]][c];
               ++row;
             }
-            const double det = det3(M[0], M[1], M[2]);
-            if(!(det != 0)) continue;
-            double m[3];
-            for(int t = 0; t < 3; ++t) { // Cramer: column t replaced by ones
-              double C[3][3];
-              for(int c = 0; c < 3; ++c)
-                for(int col = 0; col < 3; ++col) C[c][col] = col == t ? 1. : M[c][col];
-              m[t] = -det3(C[0], C[1], C[2]) / det;
-            }
-            if(!(m[0] > 0 && m[1] > 0 && m[2] > 0)) continue;
+            if(!internal::weights_of_three(M, m) || !(m[0] > 0 && m[1] > 0 && m[2] > 0)) continue;
             const double sum = m[0] + m[1] + m[2]; // scale to sum 1, for the reader: the proof needs no scale
             for(double& x : m) x /= sum;
             double worst = -std::numeric_limits<double>::infinity();
@@ -373,11 +363,6 @@ private:
 
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
   static double squared_length(const Point& a) { return dot(a, a); }
-  static double det3(const double* r0, const double* r1, const double* r2)
-  {
-    return r0[0] * (r1[1] * r2[2] - r1[2] * r2[1]) - r0[1] * (r1[0] * r2[2] - r1[2] * r2[0]) +
-           r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]);
-  }
 
   // sqrt(1 - z^2) within 3 units of rounding, relative, for z in [-1, 1]: one of 1 - z and 1 + z is
   // exact (Sterbenz) where the other is near 2, and both are within one unit elsewhere. (1 - z * z

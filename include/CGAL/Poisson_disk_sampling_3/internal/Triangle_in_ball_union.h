@@ -4,6 +4,8 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
 
+#include <CGAL/Poisson_disk_sampling_3/internal/weights_of_three.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -138,29 +140,13 @@ private:
             if(proves(idx, ws, 2)) return true;
           }
         for(std::size_t l = j + 1; l < k; ++l) {
-          // the weights that make the three corner sums equal: solve A w = (1, 1, 1), A[c][t] = a_t(v_c)
+          // the weights that make the three corner sums -1; if one is negative, the best weights, if
+          // any, use fewer balls (the pairs above)
           const std::size_t idx3[3] = {i, j, l};
-          double A[3][3];
+          double A[3][3], w[3];
           for(int c = 0; c < 3; ++c)
             for(int t = 0; t < 3; ++t) A[c][t] = a[idx3[t]][c];
-          const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
-                             A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-                             A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-          if(!(det != 0)) continue;
-          double w[3];
-          for(int t = 0; t < 3; ++t) { // Cramer: column t replaced by ones
-            double B[3][3];
-            for(int c = 0; c < 3; ++c)
-              for(int q = 0; q < 3; ++q) B[c][q] = q == t ? 1. : A[c][q];
-            w[t] = (B[0][0] * (B[1][1] * B[2][2] - B[1][2] * B[2][1]) -
-                    B[0][1] * (B[1][0] * B[2][2] - B[1][2] * B[2][0]) +
-                    B[0][2] * (B[1][0] * B[2][1] - B[1][1] * B[2][0])) / det;
-          }
-          // the corner sums are all 1 with these weights: with all weights negative, their opposites
-          // make the sums -1, the proof sought; otherwise the best weights, if any, use fewer balls
-          // (the pairs above)
-          if(!(w[0] < 0 && w[1] < 0 && w[2] < 0)) continue;
-          for(double& x : w) x = -x;
+          if(!weights_of_three(A, w) || !(w[0] > 0 && w[1] > 0 && w[2] > 0)) continue;
           if(proves(idx3, w, 3)) return true;
         }
       }
