@@ -466,6 +466,97 @@ TEST(TriangleFragments, UnionCoverageNeverClaimsAnUncoveredPoint)
   EXPECT_GT(claims, 200); // the test has teeth only if coverage is claimed often
 }
 
+// The triangle model's refine() is a faster form of the engine's generic step: its answers must be
+// those of is_covered(), split() and is_covered_by_union() called one by one, on fragments of every
+// level and orientation, near the origin and far from it, with balls that cover a fragment, some of
+// its children, or none.
+TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  typedef Traits::Fragment Fragment;
+  Random rng(29);
+  int parent_covered = 0, child_by_single = 0, child_by_union = 0, child_kept = 0;
+  for(int trial = 0; trial < 4000; ++trial) {
+    Traits traits;
+    const double offset = trial % 2 ? 0. : 500.;
+    auto rnd = [&]() { return Traits::Point{{offset + rng.uniform(), offset + rng.uniform(), offset + 0.3 * rng.uniform()}}; };
+    traits.add_triangle(rnd(), rnd(), rnd());
+    std::vector<Fragment> roots;
+    traits.initial_fragments(std::back_inserter(roots));
+    if(roots.empty()) continue;
+    // a random descendant, down to level 7
+    Fragment f = roots.front();
+    for(int level = int(rng.uniform_index(8)); level > 0; --level) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      f = children[rng.uniform_index(4)];
+    }
+    // balls around f's centroid, of a radius of the order of f's size
+    const Traits::Point g = traits.reference_point(f);
+    const double size = std::ldexp(1., -int(f.level)); // f's legs are at most this times the root's
+    const double radius = size * (0.2 + 0.8 * rng.uniform());
+    std::vector<std::array<double, 3>> near, around;
+    const int k = int(rng.uniform_index(7));
+    for(int i = 0; i < k; ++i) {
+      std::array<double, 3> c;
+      for(int j = 0; j < 3; ++j) c[j] = g[j] + 1.6 * radius * (rng.uniform() - 0.5);
+      around.push_back(c);
+      if(rng.uniform() < 0.6) near.push_back(c);
+    }
+
+    // the generic step
+    bool expected_covered = false;
+    for(const auto& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
+    std::vector<Fragment> expected;
+    if(!expected_covered) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      for(const Fragment& c : children) {
+        bool single = false;
+        for(const auto& b : near) single = single || traits.is_covered(c, b, radius);
+        const bool by_union = !single && traits.is_covered_by_union(c, around, radius);
+        child_by_single += single;
+        child_by_union += by_union;
+        if(!single && !by_union) expected.push_back(c);
+      }
+    }
+    parent_covered += expected_covered;
+    child_kept += int(expected.size());
+
+    std::vector<Fragment> got;
+    const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
+    ASSERT_EQ(covered, expected_covered) << "trial " << trial;
+    ASSERT_EQ(got.size(), expected.size()) << "trial " << trial;
+    for(std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].u, expected[i].u);
+      EXPECT_EQ(got[i].v, expected[i].v);
+      EXPECT_EQ(got[i].face, expected[i].face);
+      EXPECT_EQ(got[i].level, expected[i].level);
+      EXPECT_EQ(got[i].inverted, expected[i].inverted);
+    }
+  }
+  // every branch is taken often
+  EXPECT_GT(parent_covered, 200);
+  EXPECT_GT(child_by_single, 1000);
+  EXPECT_GT(child_by_union, 300);
+  EXPECT_GT(child_kept, 1000);
+}
+
+// grid_cell() is the floor of the scaled coordinate, on both sides of zero and at integers.
+TEST(CellHashTable, GridCellIsTheFloor)
+{
+  using PDS::internal::grid_cell;
+  for(double x : {0., -0., 0.5, 1., 1.5, -0.5, -1., -1.5, 1e-300, -1e-300, 3e15 + 0.5, -3e15 - 0.5, 0x1.0p61, -0x1.0p61})
+    EXPECT_EQ(double(grid_cell(x, 1.)), std::floor(x)) << x;
+  Random rng(31);
+  for(int i = 0; i < 10000; ++i) {
+    const double x = (rng.uniform() - 0.5) * std::ldexp(1., int(rng.uniform_index(60)));
+    EXPECT_EQ(double(grid_cell(x, 1.)), std::floor(x)) << x;
+  }
+  EXPECT_THROW(grid_cell(0x1.0p62, 1.), PDS::Invalid_input);
+  EXPECT_THROW(grid_cell(std::nan(""), 1.), PDS::Invalid_input);
+}
+
 // Every sample within reach of a point is in that point's bucket, whatever the cell size.
 TEST(NeighborBuckets, BucketHoldsEveryNeighbor)
 {

@@ -78,6 +78,18 @@ public:
   /// result.
   void prefetch(const Fragment& f) const;
 
+  /// Optional. The engine's step for a fragment that got a dart, done at once: returns `true` if one
+  /// point of `near` covers `f` (as `is_covered()` decides it), and writes nothing; otherwise writes
+  /// the children of `f` (as `split()` makes them, in the same order) that no point of `near` covers
+  /// and that `is_covered_by_union(child, around, radius)` does not prove covered. The answers must be
+  /// those of the operations it replaces, so that it changes no sample; a model defines it when it can
+  /// share work between them (`Triangle_fragment_traits_3` computes the six corners of the four
+  /// children once, and tests each ball against each of them once). `near` and `around` are
+  /// `std::vector<std::array<double, 3>>`.
+  template <class PointRange, class OutputIterator>
+  bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
+              OutputIterator children) const;
+
   /// writes the children of `f`, which tile it (requirement 5)
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator children) const;

@@ -219,9 +219,104 @@ public:
     return out;
   }
 
+  /// Optional operation of `SurfaceFragmentTraits_3`: the engine's step for a fragment that got a dart,
+  /// with the same answers as `is_covered()`, `split()` and `is_covered_by_union()` called one by
+  /// one, in less time. Returns `true` if one point of `near` covers `f` (and writes nothing);
+  /// otherwise writes the children of `f` that neither one point of `near` nor the union of the balls
+  /// around `around` covers. The six points the five triangles share (corners and edge midpoints of
+  /// `f`) are computed once, and each ball is tested against each of them once; the union test gets
+  /// only the balls that can meet `f`.
+  template <class PointRange, class OutputIterator>
+  bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
+              OutputIterator children) const
+  {
+    const Face& face = faces_[f.face];
+    const double h = leg(f), m = 0.5 * h;
+    // corners of f, then the midpoints of its edges: f's children are (0 3 4), (3 1 5), (4 5 2) and
+    // the flipped (5 4 3), each listed as corners() lists it (right-angle corner, along u, along v)
+    Point p[6] = {at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)};
+    static constexpr int child[4][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}, {5, 4, 3}};
+
+    // bit i of in[j]: point j is covered by ball i of `near`, as is_covered() decides it
+    const double r = radius - 4 * position_error_;
+    const double r2 = r > 0 ? r * r * (1 - 8 * std::numeric_limits<double>::epsilon()) : -1.;
+    // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
+    // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
+    const std::size_t n = (std::min)(std::size_t(64), std::size_t(std::distance(near.begin(), near.end())));
+    std::uint64_t in[6] = {0, 0, 0, 0, 0, 0};
+    auto test = [&](int first, int last) {
+      auto c = near.begin();
+      for(std::size_t i = 0; i < n; ++i, ++c)
+        for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], *c) <= r2) << i;
+    };
+    test(0, 3);
+    if(in[0] & in[1] & in[2]) return true;
+    p[3] = at(face, f.u + m, f.v);
+    p[4] = at(face, f.u, f.v + m);
+    p[5] = at(face, f.u + m, f.v + m);
+    test(3, 6);
+
+    // The balls a child's union test keeps meet the child's circumscribing ball: about its centroid,
+    // which is within R / 2 of f's centroid, of radius R / 2, R being f's (children are f halved).
+    // So they lie within radius + R of f's centroid; 1.5 R and 4 position errors leave room for the
+    // rounding of the centroids and of the distances.
+    double g[3], reach2 = 0;
+    for(int i = 0; i < 3; ++i) g[i] = (p[0][i] + p[1][i] + p[2][i]) / 3;
+    for(int j = 0; j < 3; ++j) reach2 = (std::max)(reach2, squared_distance(p[j], Point{{g[0], g[1], g[2]}}));
+    const double reach = (radius + 1.5 * std::sqrt(reach2) + 4 * position_error_) * (1 + 1e-9);
+    Point meeting[internal::Triangle_in_ball_union::max_balls];
+    std::size_t k = 0;
+    bool all_kept = true; // whether `meeting` holds every ball of `around` that can meet f
+    for(const auto& c : around) {
+      const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
+      if(x * x + y * y + z * z >= reach * reach) continue;
+      if(k == internal::Triangle_in_ball_union::max_balls) {
+        all_kept = false;
+        break;
+      }
+      meeting[k++] = Point{{c[0], c[1], c[2]}};
+    }
+
+    // which of the six points are strictly inside a ball of `meeting`, shrunk as the union test
+    // shrinks them: a child with a corner outside is not covered by the union
+    typedef internal::Triangle_in_ball_union Union;
+    const double corner_error = 2 * position_error_; // position_error_ bounds each coordinate
+    const Points_view balls{meeting, meeting + k};
+    signed char inside[6] = {-1, -1, -1, -1, -1, -1}; // not known yet
+    auto is_inside = [&](int j) {
+      if(inside[j] < 0) inside[j] = Union::is_inside_one(p[j], balls, radius - corner_error);
+      return inside[j] == 1;
+    };
+
+    const std::uint8_t l = std::uint8_t(f.level + 1);
+    for(int c = 0; c < 4; ++c) {
+      const int* t = child[c];
+      // as split() makes them
+      const Fragment fc = c == 3 ? Fragment{f.u + m, f.v + m, f.face, l, !f.inverted}
+                                 : Fragment{c == 1 ? f.u + m : f.u, c == 2 ? f.v + m : f.v, f.face, l,
+                                            f.inverted};
+      if(!(area(fc) > 0)) continue;
+      if(in[t[0]] & in[t[1]] & in[t[2]]) continue;
+      const Point corner[3] = {p[t[0]], p[t[1]], p[t[2]]};
+      const bool by_union =
+          all_kept ? radius > corner_error && is_inside(t[0]) && is_inside(t[1]) && is_inside(t[2]) &&
+                         Union::covers_with_corners_inside(corner, balls, radius, corner_error)
+                   : Union::covers(corner, around, radius, corner_error);
+      if(!by_union) *children++ = fc;
+    }
+    return false;
+  }
+
   /// @}
 
 private:
+  struct Points_view
+  {
+    const Point *first, *last;
+    const Point* begin() const { return first; }
+    const Point* end() const { return last; }
+  };
+
   struct Face
   {
     Point v0, e1, e2;   // the rotated triangle: v0, v0 + e1, v0 + e2

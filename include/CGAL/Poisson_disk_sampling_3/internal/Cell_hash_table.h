@@ -20,10 +20,13 @@ namespace internal {
 /// \throws Invalid_input if the cell index would not fit in 64 bits (or `c` is not finite)
 inline std::int64_t grid_cell(double c, double inv_cell)
 {
-  const double x = std::floor(c * inv_cell);
+  const double x = c * inv_cell;
   if(!(std::abs(x) < 0x1.0p62)) // converting would be undefined
     throw Invalid_input("a coordinate is too large relative to the minimum distance (or not finite)");
-  return std::int64_t(x);
+  // floor(x) without a call to std::floor (which is not inlined without SSE4.1): the conversion
+  // truncates towards zero, exactly for |x| < 2^62
+  const std::int64_t t = std::int64_t(x);
+  return t - std::int64_t(x < double(t));
 }
 
 /// The half-side of a box around coordinate `c` that holds every point within `reach` of it, widened

@@ -50,6 +50,17 @@ template <class Traits>
 struct Has_level<Traits, std::void_t<decltype(std::declval<const Traits&>().level(
                              std::declval<const typename Traits::Fragment&>()))>> : std::true_type {};
 
+/// whether a model offers the optional `refine(fragment, near, around, radius, children)`
+template <class Traits, class = void>
+struct Has_refine : std::false_type {};
+template <class Traits>
+struct Has_refine<Traits, std::void_t<decltype(std::declval<const Traits&>().refine(
+                              std::declval<const typename Traits::Fragment&>(),
+                              std::declval<const std::vector<std::array<double, 3>>&>(),
+                              std::declval<const std::vector<std::array<double, 3>>&>(), 1.,
+                              std::declval<std::back_insert_iterator<std::vector<typename Traits::Fragment>>>()))>>
+    : std::true_type {};
+
 /// what a run did, for tests and benchmarks
 struct Engine_statistics
 {
@@ -216,26 +227,18 @@ public:
         }
         // F itself gets the single-ball test only: it is rarely covered by the union when no single
         // ball covers it, and if it is, its children are, and the union test on them drops them
-        if(is_covered_by_any(d.item.fragment, near)) {
+        const int depth = depth_of(d.item);
+        children.clear();
+        if(refine(d.item.fragment, depth, near, around, children)) {
           stats.darts_on_covered += !d.accepted;
           continue;
         }
-        const int depth = depth_of(d.item);
         if(depth >= max_depth_) {
           ++stats.dropped_at_max_depth;
           continue;
         }
-        children.clear();
-        traits_.split(d.item.fragment, std::back_inserter(children));
-        bool kept = false;
-        for(const Fragment& c : children) {
-          const double a = traits_.area(c);
-          if(a > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around)) {
-            pool.push(make_item(c, depth + 1), a);
-            kept = true;
-          }
-        }
-        stats.darts_on_covered += !d.accepted && !kept;
+        for(const Fragment& c : children) pool.push(make_item(c, depth + 1), traits_.area(c));
+        stats.darts_on_covered += !d.accepted && children.empty();
       }
       pool.end_batch();
     }
@@ -273,6 +276,7 @@ private:
   // the state of a dart through the stages of a batch
   struct Dart
   {
+    Dart() {} // every stage sets what the next one reads: no zeroing on each batch's resize()
     typename Pool::Handle handle;
     double u;                       // for the pool's rejection step
     Item item;
@@ -312,30 +316,51 @@ private:
     return none;
   }
 
-  // Appends q to `near` at position n if it is within D of p (or just outside), to `around` at a if
-  // it is within 2D, and advances the positions; both have room. Without branches: which samples are
-  // within 2D of a dart is a coin toss for the branch predictor.
-  void add_if_near(const Point_d& q, const Point_d& p, std::vector<Point_d>& near, std::size_t& n,
-                   std::vector<Point_d>& around, std::size_t& a) const
+  // appends to `near` and `around` (from positions n and a, which it advances) the samples of
+  // `bucket` within D (and a few just outside) and within 2D of p. The scan has no branches (which
+  // samples are within 2D of a dart is a coin toss for the branch predictor) and writes only the
+  // positions of the samples it finds; they are copied after.
+  void gather_near(const std::vector<Point_d>& bucket, const Point_d& p, std::vector<Point_d>& near,
+                   std::size_t& n, std::vector<Point_d>& around, std::size_t& a)
   {
-    const double d2_near = d_ * d_ * (1 + 1e-9);
-    const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    near[n] = q;
-    n += d2 <= d2_near;
-    around[a] = q;
-    a += d2 <= 4 * d2_near;
+    const std::size_t size = bucket.size();
+    if(hits_.size() < 2 * size) hits_.resize(2 * size);
+    std::uint32_t* hit_near = hits_.data();
+    std::uint32_t* hit_around = hits_.data() + size;
+    const double d2_near = d_ * d_ * (1 + 1e-9), d2_around = 4 * d2_near;
+    std::size_t hn = 0, ha = 0;
+    for(std::size_t i = 0; i < size; ++i) {
+      const Point_d& q = bucket[i];
+      const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      hit_near[hn] = std::uint32_t(i);
+      hn += d2 <= d2_near;
+      hit_around[ha] = std::uint32_t(i);
+      ha += d2 <= d2_around;
+    }
+    if(near.size() < n + hn) near.resize((std::max)(n + hn, 2 * near.size()));
+    if(around.size() < a + ha) around.resize((std::max)(a + ha, 2 * around.size()));
+    for(std::size_t i = 0; i < hn; ++i) near[n++] = bucket[hit_near[i]];
+    for(std::size_t i = 0; i < ha; ++i) around[a++] = bucket[hit_around[i]];
   }
 
-  // appends to `near` and `around` (from positions n and a, which it advances) the samples of
-  // `bucket` within D and 2D of p
-  void gather_near(const std::vector<Point_d>& bucket, const Point_d& p, std::vector<Point_d>& near,
-                   std::size_t& n, std::vector<Point_d>& around, std::size_t& a) const
+  // True if one point of `near` covers f. Otherwise, unless f is at the depth floor, writes the
+  // children of f that neither one point of `near` nor the union of the balls around `around` covers.
+  bool refine(const Fragment& f, int depth, const std::vector<Point_d>& near, const std::vector<Point_d>& around,
+              std::vector<Fragment>& children) const
   {
-    const std::size_t need_n = n + bucket.size(), need_a = a + bucket.size();
-    if(near.size() < need_n) near.resize((std::max)(need_n, 2 * near.size()));
-    if(around.size() < need_a) around.resize((std::max)(need_a, 2 * around.size()));
-    for(const Point_d& q : bucket) add_if_near(q, p, near, n, around, a);
+    if constexpr(Has_refine<Traits>::value) {
+      if(depth < max_depth_) return traits_.refine(f, near, around, d_, std::back_inserter(children));
+    }
+    if(is_covered_by_any(f, near)) return true;
+    if(depth >= max_depth_) return false;
+    traits_.split(f, std::back_inserter(children));
+    std::size_t kept = 0;
+    for(const Fragment& c : children)
+      if(traits_.area(c) > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around))
+        children[kept++] = c;
+    children.erase(children.begin() + std::ptrdiff_t(kept), children.end());
+    return false;
   }
 
   bool is_covered_by_any(const Fragment& f, const std::vector<Point_d>& centers) const
@@ -352,6 +377,7 @@ private:
   }
 
   const Traits& traits_;
+  std::vector<std::uint32_t> hits_; // scratch of gather_near()
   double d_;
   std::uint64_t seed_;
   std::size_t max_points_;

@@ -53,22 +53,36 @@ public:
   template <class PointRange>
   static bool covers(const Point (&corner)[3], const PointRange& centers, double radius, double corner_error)
   {
-    Point kept[max_balls];
-    std::size_t k = 0;
     const double r = radius - corner_error;
     if(!(r > 0)) return false;
     // most triangles that reach this test have a corner outside every ball: find out first
-    for(const Point& p : corner) {
-      bool in = false;
-      for(const auto& c : centers) {
-        const double x = p[0] - c[0], y = p[1] - c[1], z = p[2] - c[2];
-        if(x * x + y * y + z * z < r * r) {
-          in = true;
-          break;
-        }
-      }
-      if(!in) return false;
+    for(const Point& p : corner)
+      if(!is_inside_one(p, centers, r)) return false;
+    return covers_with_corners_inside(corner, centers, radius, corner_error);
+  }
+
+  /// whether p is strictly inside one of the balls of radius r (computed as `covers()` decides it
+  /// for the corners)
+  template <class PointRange>
+  static bool is_inside_one(const Point& p, const PointRange& centers, double r)
+  {
+    for(const auto& c : centers) {
+      const double x = p[0] - c[0], y = p[1] - c[1], z = p[2] - c[2];
+      if(x * x + y * y + z * z < r * r) return true;
     }
+    return false;
+  }
+
+  /// `covers()` without its first step, for a triangle whose corners `is_inside_one()` has found
+  /// inside the balls shrunk by `corner_error` (with radius - corner_error > 0). It is as sound for
+  /// any triangle: the candidate points it checks include the corners.
+  template <class PointRange>
+  static bool covers_with_corners_inside(const Point (&corner)[3], const PointRange& centers, double radius,
+                                         double corner_error)
+  {
+    Point kept[max_balls];
+    std::size_t k = 0;
+    const double r = radius - corner_error;
     // Only the balls that meet T matter: the union of the others misses T. Keep the balls that meet
     // T's circumscribing ball around its centroid; the test is cubic in their number, and this keeps
     // two or three for a small fragment instead of the dozen a box would. (Rounding here only drops
@@ -164,13 +178,32 @@ private:
   // centre of the point equidistant from three centres): gamma_40 < 4.5e-15, and 1e-13 a bounds the
   // error with room to spare. The coordinates are scaled by a power of two near 1 / radius, so that
   // values stay far from underflow and overflow; the 1e-280 covers what a subnormal could lose.
+  // Where the compiler has vectors of two doubles, v and a are one, so that each operation is one
+  // instruction (a difference two: the sign of o.v is flipped by an exact product).
+#if defined(__GNUC__)
+  typedef double Pair __attribute__((vector_size(16)));
   struct Bounded
   {
-    double v, a;
-    Bounded operator+(const Bounded& o) const { return {v + o.v, a + o.a}; }
-    Bounded operator-(const Bounded& o) const { return {v - o.v, a + o.a}; }
-    Bounded operator*(const Bounded& o) const { return {v * o.v, a * o.a}; }
+    Pair p; // {v, a}
+    double v() const { return p[0]; }
+    double a() const { return p[1]; }
+    static Bounded of(double v, double a) { return {Pair{v, a}}; }
+    Bounded operator+(const Bounded& o) const { return {p + o.p}; }
+    Bounded operator-(const Bounded& o) const { return {p + o.p * Pair{-1., 1.}}; }
+    Bounded operator*(const Bounded& o) const { return {p * o.p}; }
   };
+#else
+  struct Bounded
+  {
+    double v_, a_;
+    double v() const { return v_; }
+    double a() const { return a_; }
+    static Bounded of(double v, double a) { return {v, a}; }
+    Bounded operator+(const Bounded& o) const { return {v_ + o.v_, a_ + o.a_}; }
+    Bounded operator-(const Bounded& o) const { return {v_ - o.v_, a_ + o.a_}; }
+    Bounded operator*(const Bounded& o) const { return {v_ * o.v_, a_ * o.a_}; }
+  };
+#endif
 
   // Inputs and constants, and sign tests: plain for double (the filter), only what the error bound
   // makes certain for Bounded (the proof).
@@ -178,12 +211,12 @@ private:
   static NT number(double x)
   {
     if constexpr(std::is_same_v<NT, double>) return x;
-    else return NT{x, std::abs(x)};
+    else return NT::of(x, std::abs(x));
   }
   static bool negative(double x) { return x < 0; }
   static bool positive(double x) { return x > 0; }
-  static bool negative(const Bounded& x) { return x.v < -(1e-13 * x.a + 1e-280); }
-  static bool positive(const Bounded& x) { return x.v > 1e-13 * x.a + 1e-280; }
+  static bool negative(const Bounded& x) { return x.v() < -(1e-13 * x.a() + 1e-280); }
+  static bool positive(const Bounded& x) { return x.v() > 1e-13 * x.a() + 1e-280; }
 
   template <class NT>
   struct V
