@@ -333,4 +333,72 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
   EXPECT_GT(useful_proven, useful / 3);
 }
 
+// refine() is a faster form of the engine's generic step: its answers must be those of
+// is_covered(), split() and is_covered_by_union() called one by one, among the samples of a maximal
+// set, on rectangles of many sizes, at the poles and across longitude 0 too.
+TEST(SphereFragments, RefineAgreesWithTheOperationsItReplaces)
+{
+  const Traits traits({{0, 0, 0}}, 1);
+  const double d = 0.05;
+  std::vector<Point> points;
+  PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, 1), std::back_inserter(points),
+                     PDS::parameters::minimum_distance(d).random_seed(6));
+  PDS::internal::Random rng(13);
+  std::vector<Fragment> octants;
+  traits.initial_fragments(std::back_inserter(octants));
+  int parent_covered = 0, child_by_single = 0, child_by_union = 0, child_kept = 0;
+  for(int trial = 0; trial < 3000; ++trial) {
+    Fragment f = octants[rng.uniform_index(8)];
+    const int level = 3 + int(rng.uniform_index(7));
+    for(int l = 0; l < level; ++l) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      f = children[rng.uniform_index(4)];
+    }
+    // the samples near the rectangle's middle, as the engine would pass them
+    const Traits::Point m = traits.reference_point(f);
+    std::vector<Traits::Point> near, around;
+    for(const Point& p : points) {
+      const double dist = std::hypot(p.x() - m[0], p.y() - m[1], p.z() - m[2]);
+      if(dist < 2 * d) around.push_back({{p.x(), p.y(), p.z()}});
+      if(dist < d) near.push_back({{p.x(), p.y(), p.z()}});
+    }
+    const double radius = d * (rng.uniform() < 0.5 ? 1. : 0.9 + 0.2 * rng.uniform());
+
+    bool expected_covered = false;
+    for(const auto& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
+    std::vector<Fragment> expected;
+    if(!expected_covered) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      for(const Fragment& c : children) {
+        bool single = false;
+        for(const auto& b : near) single = single || traits.is_covered(c, b, radius);
+        const bool by_union = !single && traits.is_covered_by_union(c, around, radius);
+        child_by_single += single;
+        child_by_union += by_union;
+        if(!single && !by_union) expected.push_back(c);
+      }
+    }
+    parent_covered += expected_covered;
+    child_kept += int(expected.size());
+
+    std::vector<Fragment> got;
+    const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
+    ASSERT_EQ(covered, expected_covered) << "trial " << trial;
+    ASSERT_EQ(got.size(), expected.size()) << "trial " << trial;
+    for(std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].theta0, expected[i].theta0);
+      EXPECT_EQ(got[i].theta1, expected[i].theta1);
+      EXPECT_EQ(got[i].z0, expected[i].z0);
+      EXPECT_EQ(got[i].z1, expected[i].z1);
+    }
+  }
+  // every branch is taken often
+  EXPECT_GT(parent_covered, 200);
+  EXPECT_GT(child_by_single, 1000);
+  EXPECT_GT(child_by_union, 300);
+  EXPECT_GT(child_kept, 1000);
+}
+
 } // namespace

@@ -115,13 +115,8 @@ public:
   /// than the rounding error
   bool is_covered(const Fragment& f, const Point& center, double radius) const
   {
-    // |x - s|^2 = R^2 + |w|^2 - 2 R (u . w) for x = c + R u on the sphere and w = s - c, so the
-    // rectangle is in the ball iff the minimum of u . w over it is at least t.
-    const Point w{{center[0] - c_[0], center[1] - c_[1], center[2] - c_[2]}};
-    const double w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-    const double t = (r_ * r_ + w2 - radius * radius) / (2 * r_);
-    const double margin = error_ * (1 + (std::sqrt(w2) + radius) / r_) * (1 + radius / r_);
-    return min_dot(f, w) >= t + margin;
+    const Ball b = ball(center, radius);
+    return min_dot(f, b, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1), std::sin(f.theta1)) >= b.threshold;
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: true only if every point of the rectangle is
@@ -158,10 +153,61 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
   {
+    return is_covered_by_union(f, centers, radius, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1),
+                               std::sin(f.theta1));
+  }
+
+  /// Optional operation of `SurfaceFragmentTraits_3`: the engine's step for a fragment that got a
+  /// dart, with the same answers as `is_covered()`, `split()` and `is_covered_by_union()` called one
+  /// by one, in less time: the cosines and sines of the three longitudes the five rectangles share,
+  /// and each ball's longitude, are computed once. Returns `true` if one point of `near` covers `f`
+  /// (and writes nothing); otherwise writes the children of `f` that neither one point of `near` nor
+  /// the union of the balls around `around` covers.
+  template <class PointRange, class OutputIterator>
+  bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
+              OutputIterator children) const
+  {
+    const double tm = 0.5 * (f.theta0 + f.theta1), zm = 0.5 * (f.z0 + f.z1);
+    const double cs[3] = {std::cos(f.theta0), std::cos(tm), std::cos(f.theta1)};
+    const double sn[3] = {std::sin(f.theta0), std::sin(tm), std::sin(f.theta1)};
+    // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
+    // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
+    Ball balls[64];
+    std::size_t n = 0;
+    for(const auto& c : near) {
+      if(n == 64) break;
+      balls[n++] = ball(c, radius);
+    }
+    // whether one ball covers g, whose longitudes are number i0 and i1
+    auto covered_by_one = [&](const Fragment& g, int i0, int i1) {
+      for(std::size_t i = 0; i < n; ++i)
+        if(min_dot(g, balls[i], cs[i0], sn[i0], cs[i1], sn[i1]) >= balls[i].threshold) return true;
+      return false;
+    };
+    if(covered_by_one(f, 0, 2)) return true;
+    // as split() makes them
+    const Fragment child[4] = {{f.theta0, tm, f.z0, zm}, {tm, f.theta1, f.z0, zm}, {f.theta0, tm, zm, f.z1},
+                               {tm, f.theta1, zm, f.z1}};
+    for(int c = 0; c < 4; ++c) {
+      const int i0 = c % 2, i1 = i0 + 1;
+      const Fragment& g = child[c];
+      if(area(g) > 0 && !covered_by_one(g, i0, i1) &&
+         !is_covered_by_union(g, around, radius, cs[i0], sn[i0], cs[i1], sn[i1]))
+        *children++ = g;
+    }
+    return false;
+  }
+
+private:
+  // is_covered_by_union(), given the cosines and sines of f's longitudes
+  template <class PointRange>
+  bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius, double cos0, double sin0,
+                           double cos1, double sin1) const
+  {
     const double rad2 = radius * radius, base = r_ * r_ - rad2;
     // the proxies, as points minus the sphere's centre: corners 0 to 3, then the middles of the
     // edges, computed only if every corner is in a ball
-    double ct[3] = {std::cos(f.theta0), std::cos(f.theta1), 0}, st[3] = {std::sin(f.theta0), std::sin(f.theta1), 0};
+    double ct[3] = {cos0, cos1, 0}, st[3] = {sin0, sin1, 0};
     double zs[3] = {f.z0, f.z1, 0.5 * (f.z0 + f.z1)}, rs[3];
     for(int j = 0; j < 2; ++j) rs[j] = rho_of(zs[j]);
     static constexpr int at_theta[proxies] = {0, 1, 0, 1, 2, 2, 0, 1}; // 2 is the middle
@@ -328,6 +374,7 @@ public:
     return false;
   }
 
+public:
   /// the paper's test, kept to show where it fails: true if the four corners are in the ball
   bool are_corners_covered(const Fragment& f, const Point& center, double radius) const
   {
@@ -381,20 +428,51 @@ private:
   // every z (rho >= 0), so the minimum is g(z) = m rho(z) + wz z with m the smallest value of
   // wx cos theta + wy sin theta on [theta0, theta1]. In phi, g = m sin phi + wz cos phi is a sinusoid:
   // its minimum on an interval is at an end, or at its trough when the trough is inside.
-  static double min_dot(const Fragment& f, const Point& w)
-  {
-    return min_dot(f, w, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1), std::sin(f.theta1));
-  }
-  // the same, given the cosines and sines of theta0 and theta1
+  // Given the cosines and sines of theta0 and theta1.
   static double min_dot(const Fragment& f, const Point& w, double cos0, double sin0, double cos1, double sin1)
   {
-    const double wxy = std::sqrt(w[0] * w[0] + w[1] * w[1]);
-    double m = (std::min)(w[0] * cos0 + w[1] * sin0, w[0] * cos1 + w[1] * sin1);
-    if(wxy > 0) {
-      double away = std::atan2(-w[1], -w[0]); // longitude of -w, where the theta part is smallest
-      if(away < 0) away += 2 * pi();
-      if(f.theta0 <= away && away <= f.theta1) m = -wxy;
+    Ball b;
+    b.w = w;
+    longitude_of(b);
+    return min_dot(f, b, cos0, sin0, cos1, sin1);
+  }
+
+  // what is_covered() and min_dot() need of a ball, computed once for all the rectangles tested
+  struct Ball
+  {
+    Point w;          // centre minus the sphere's centre
+    double wxy;       // the length of (wx, wy)
+    double away;      // the longitude of -w, where the theta part is smallest (if wxy > 0)
+    double threshold; // the rectangle is in the ball if min_dot() is at least this
+  };
+  static void longitude_of(Ball& b)
+  {
+    b.wxy = std::sqrt(b.w[0] * b.w[0] + b.w[1] * b.w[1]);
+    b.away = 0;
+    if(b.wxy > 0) {
+      b.away = std::atan2(-b.w[1], -b.w[0]);
+      if(b.away < 0) b.away += 2 * pi();
     }
+  }
+  Ball ball(const Point& center, double radius) const
+  {
+    // |x - s|^2 = R^2 + |w|^2 - 2 R (u . w) for x = c + R u on the sphere and w = s - c, so the
+    // rectangle is in the ball iff the minimum of u . w over it is at least t.
+    Ball b;
+    b.w = Point{{center[0] - c_[0], center[1] - c_[1], center[2] - c_[2]}};
+    const double w2 = b.w[0] * b.w[0] + b.w[1] * b.w[1] + b.w[2] * b.w[2];
+    const double t = (r_ * r_ + w2 - radius * radius) / (2 * r_);
+    const double margin = error_ * (1 + (std::sqrt(w2) + radius) / r_) * (1 + radius / r_);
+    b.threshold = t + margin;
+    longitude_of(b);
+    return b;
+  }
+
+  static double min_dot(const Fragment& f, const Ball& b, double cos0, double sin0, double cos1, double sin1)
+  {
+    const Point& w = b.w;
+    double m = (std::min)(w[0] * cos0 + w[1] * sin0, w[0] * cos1 + w[1] * sin1);
+    if(b.wxy > 0 && f.theta0 <= b.away && b.away <= f.theta1) m = -b.wxy;
     auto g = [&](double z) { return m * rho_of(z) + w[2] * z; };
     double result = (std::min)(g(f.z0), g(f.z1));
     const double k = std::sqrt(m * m + w[2] * w[2]);
