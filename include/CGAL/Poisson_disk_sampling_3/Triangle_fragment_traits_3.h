@@ -97,6 +97,9 @@ public:
     return std::uint32_t(faces_.size() - 1);
   }
 
+  /// makes room for `n` triangles in all, so that adding them does not move the ones added before
+  void reserve(std::size_t n) { faces_.reserve(n); }
+
   /// number of triangles added
   std::size_t number_of_triangles() const { return faces_.size(); }
 

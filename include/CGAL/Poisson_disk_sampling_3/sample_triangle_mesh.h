@@ -56,7 +56,9 @@ triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
   Triangle_fragment_traits_3 traits;
+  traits.reserve(std::size_t(num_faces(tm)));
   face_of.clear();
+  face_of.reserve(std::size_t(num_faces(tm)));
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
     if(next(next(next(h, tm), tm), tm) != h)
