@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fragment_checks.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -475,7 +477,7 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
   typedef PDS::Triangle_fragment_traits_3 Traits;
   typedef Traits::Fragment Fragment;
   Random rng(29);
-  int parent_covered = 0, child_by_single = 0, child_by_union = 0, child_kept = 0;
+  Refine_counts counts;
   for(int trial = 0; trial < 4000; ++trial) {
     Traits traits;
     const double offset = trial % 2 ? 0. : 500.;
@@ -484,13 +486,7 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
     std::vector<Fragment> roots;
     traits.initial_fragments(std::back_inserter(roots));
     if(roots.empty()) continue;
-    // a random descendant, down to level 7
-    Fragment f = roots.front();
-    for(int level = int(rng.uniform_index(8)); level > 0; --level) {
-      std::vector<Fragment> children;
-      traits.split(f, std::back_inserter(children));
-      f = children[rng.uniform_index(4)];
-    }
+    const Fragment f = random_descendant(traits, roots.front(), int(rng.uniform_index(8)), rng);
     // balls around f's centroid, of a radius of the order of f's size
     const Traits::Point g = traits.reference_point(f);
     const double size = std::ldexp(1., -int(f.level)); // f's legs are at most this times the root's
@@ -503,43 +499,12 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
       around.push_back(c);
       if(rng.uniform() < 0.6) near.push_back(c);
     }
-
-    // the generic step
-    bool expected_covered = false;
-    for(const auto& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
-    std::vector<Fragment> expected;
-    if(!expected_covered) {
-      std::vector<Fragment> children;
-      traits.split(f, std::back_inserter(children));
-      for(const Fragment& c : children) {
-        bool single = false;
-        for(const auto& b : near) single = single || traits.is_covered(c, b, radius);
-        const bool by_union = !single && traits.is_covered_by_union(c, around, radius);
-        child_by_single += single;
-        child_by_union += by_union;
-        if(!single && !by_union) expected.push_back(c);
-      }
-    }
-    parent_covered += expected_covered;
-    child_kept += int(expected.size());
-
-    std::vector<Fragment> got;
-    const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
-    ASSERT_EQ(covered, expected_covered) << "trial " << trial;
-    ASSERT_EQ(got.size(), expected.size()) << "trial " << trial;
-    for(std::size_t i = 0; i < got.size(); ++i) {
-      EXPECT_EQ(got[i].u, expected[i].u);
-      EXPECT_EQ(got[i].v, expected[i].v);
-      EXPECT_EQ(got[i].face, expected[i].face);
-      EXPECT_EQ(got[i].level, expected[i].level);
-      EXPECT_EQ(got[i].inverted, expected[i].inverted);
-    }
+    auto same = [](const Fragment& a, const Fragment& b) {
+      return a.u == b.u && a.v == b.v && a.face == b.face && a.level == b.level && a.inverted == b.inverted;
+    };
+    expect_refine_agrees(traits, f, near, around, radius, same, counts, trial);
   }
-  // every branch is taken often
-  EXPECT_GT(parent_covered, 200);
-  EXPECT_GT(child_by_single, 1000);
-  EXPECT_GT(child_by_union, 300);
-  EXPECT_GT(child_kept, 1000);
+  expect_every_branch_taken(counts);
 }
 
 // grid_cell() is the floor of the scaled coordinate, on both sides of zero and at integers.

@@ -5,6 +5,7 @@
 // coverage test that stays right near the poles where the paper's corner test fails, alone and for a
 // union of balls.
 
+#include "fragment_checks.h"
 #include "test_support.h"
 
 #include <algorithm>
@@ -277,6 +278,15 @@ TEST(SphereFragments, UnionCoverageIsSoundNearTheEdgeOfCoverage)
   EXPECT_GT(useful_proven, useful / 25);
 }
 
+// a maximal Poisson-disk set of the unit sphere
+std::vector<Point> unit_sphere_samples(double d, unsigned seed)
+{
+  std::vector<Point> points;
+  PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, 1), std::back_inserter(points),
+                     PDS::parameters::minimum_distance(d).random_seed(seed));
+  return points;
+}
+
 // The union test where the engine uses it: rectangles of the engine's subdivision (children of the
 // octants, a few levels deep, at all latitudes and at the poles) near the samples of a maximal set,
 // with the samples within 2D of the rectangle as centres and radii of D or a little less. Sound as
@@ -287,9 +297,7 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
 {
   const Traits traits({{0, 0, 0}}, 1);
   const double d = 0.05;
-  std::vector<Point> points;
-  PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, 1), std::back_inserter(points),
-                     PDS::parameters::minimum_distance(d).random_seed(5));
+  const std::vector<Point> points = unit_sphere_samples(d, 5);
   PDS::internal::Random rng(12);
   int proven = 0, useful = 0, useful_proven = 0;
   const int trials = 2000;
@@ -297,13 +305,7 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
   traits.initial_fragments(std::back_inserter(octants));
   for(int trial = 0; trial < trials; ++trial) {
     // a rectangle of the engine's subdivision, level 5 to 9: about D to D / 16 across
-    Fragment f = octants[rng.uniform_index(8)];
-    const int level = 5 + int(rng.uniform_index(5));
-    for(int l = 0; l < level; ++l) {
-      std::vector<Fragment> children;
-      traits.split(f, std::back_inserter(children));
-      f = children[rng.uniform_index(4)];
-    }
+    const Fragment f = random_descendant(traits, octants[rng.uniform_index(8)], 5 + int(rng.uniform_index(5)), rng);
     const Traits::Point m = traits.reference_point(f);
     double reach = 0;
     for(double theta : {f.theta0, f.theta1})
@@ -340,21 +342,13 @@ TEST(SphereFragments, RefineAgreesWithTheOperationsItReplaces)
 {
   const Traits traits({{0, 0, 0}}, 1);
   const double d = 0.05;
-  std::vector<Point> points;
-  PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, 1), std::back_inserter(points),
-                     PDS::parameters::minimum_distance(d).random_seed(6));
+  const std::vector<Point> points = unit_sphere_samples(d, 6);
   PDS::internal::Random rng(13);
   std::vector<Fragment> octants;
   traits.initial_fragments(std::back_inserter(octants));
-  int parent_covered = 0, child_by_single = 0, child_by_union = 0, child_kept = 0;
+  Refine_counts counts;
   for(int trial = 0; trial < 3000; ++trial) {
-    Fragment f = octants[rng.uniform_index(8)];
-    const int level = 3 + int(rng.uniform_index(7));
-    for(int l = 0; l < level; ++l) {
-      std::vector<Fragment> children;
-      traits.split(f, std::back_inserter(children));
-      f = children[rng.uniform_index(4)];
-    }
+    const Fragment f = random_descendant(traits, octants[rng.uniform_index(8)], 3 + int(rng.uniform_index(7)), rng);
     // the samples near the rectangle's middle, as the engine would pass them
     const Traits::Point m = traits.reference_point(f);
     std::vector<Traits::Point> near, around;
@@ -364,41 +358,12 @@ TEST(SphereFragments, RefineAgreesWithTheOperationsItReplaces)
       if(dist < d) near.push_back({{p.x(), p.y(), p.z()}});
     }
     const double radius = d * (rng.uniform() < 0.5 ? 1. : 0.9 + 0.2 * rng.uniform());
-
-    bool expected_covered = false;
-    for(const auto& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
-    std::vector<Fragment> expected;
-    if(!expected_covered) {
-      std::vector<Fragment> children;
-      traits.split(f, std::back_inserter(children));
-      for(const Fragment& c : children) {
-        bool single = false;
-        for(const auto& b : near) single = single || traits.is_covered(c, b, radius);
-        const bool by_union = !single && traits.is_covered_by_union(c, around, radius);
-        child_by_single += single;
-        child_by_union += by_union;
-        if(!single && !by_union) expected.push_back(c);
-      }
-    }
-    parent_covered += expected_covered;
-    child_kept += int(expected.size());
-
-    std::vector<Fragment> got;
-    const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
-    ASSERT_EQ(covered, expected_covered) << "trial " << trial;
-    ASSERT_EQ(got.size(), expected.size()) << "trial " << trial;
-    for(std::size_t i = 0; i < got.size(); ++i) {
-      EXPECT_EQ(got[i].theta0, expected[i].theta0);
-      EXPECT_EQ(got[i].theta1, expected[i].theta1);
-      EXPECT_EQ(got[i].z0, expected[i].z0);
-      EXPECT_EQ(got[i].z1, expected[i].z1);
-    }
+    auto same = [](const Fragment& a, const Fragment& b) {
+      return a.theta0 == b.theta0 && a.theta1 == b.theta1 && a.z0 == b.z0 && a.z1 == b.z1;
+    };
+    expect_refine_agrees(traits, f, near, around, radius, same, counts, trial);
   }
-  // every branch is taken often
-  EXPECT_GT(parent_covered, 200);
-  EXPECT_GT(child_by_single, 1000);
-  EXPECT_GT(child_by_union, 300);
-  EXPECT_GT(child_kept, 1000);
+  expect_every_branch_taken(counts);
 }
 
 } // namespace
