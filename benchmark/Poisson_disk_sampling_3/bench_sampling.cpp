@@ -20,6 +20,7 @@
 #include <boost/function_output_iterator.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -203,35 +204,44 @@ void count_mode_case(benchmark::State& state, const std::string& name)
   state.counters["count_vs_radius"] = seconds / radius_seconds; // <= 3 is the target
 }
 
-// Seconds at 1M points over seconds at 100k points, same mesh, same run: the fastest of three runs of
-// each size, run alternately, so that a change of the host's speed during the case (which moves a
-// single run by 10 to 20% on the machine of benchmark/README.md) weighs on both sizes alike.
+// The cases that compare variants (two sizes, with and without a test) run them in turn,
+// `comparison_runs` times each, and keep the fastest of each: a change of the host's speed during the
+// case (which moves a single run by 10 to 20% on the machine of benchmark/README.md) then weighs on
+// all alike. `run(v)` runs variant v (0 to N - 1) once; returns the fastest seconds of each variant
+// and sets the case's time to the total.
+constexpr int comparison_runs = 3;
+template <std::size_t N = 2, class Run>
+std::array<double, N> fastest_alternating(benchmark::State& state, Run run)
+{
+  std::array<double, N> best;
+  best.fill(1e300);
+  for(auto _ : state) {
+    double total = 0;
+    for(int r = 0; r < comparison_runs; ++r)
+      for(std::size_t v = 0; v < N; ++v) {
+        const auto start = std::chrono::steady_clock::now();
+        run(v);
+        const double s = seconds_since(start);
+        best[v] = std::min(best[v], s);
+        total += s;
+      }
+    state.SetIterationTime(total);
+  }
+  state.counters["runs"] = comparison_runs;
+  return best;
+}
+
+// seconds at 1M points over seconds at 100k points, same mesh, same run
 void linearity_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
   const double area = PMP::area(m);
-  const int runs = 3;
-  double ratio = 0;
-  for(auto _ : state) {
-    double best[2] = {1e300, 1e300}, total = 0;
-    for(int r = 0; r < runs; ++r) {
-      int i = 0;
-      for(double n : {1e5, 1e6}) {
-        std::vector<Point> points;
-        const auto start = std::chrono::steady_clock::now();
-        PDS::sample_triangle_mesh(m, std::back_inserter(points),
-                                  PDS::parameters::minimum_distance(std::sqrt(0.6965 * area / n)));
-        const double s = seconds_since(start);
-        best[i] = std::min(best[i], s);
-        total += s;
-        ++i;
-      }
-    }
-    ratio = best[1] / best[0];
-    state.SetIterationTime(total);
-  }
-  state.counters["seconds_1M_over_100k"] = ratio; // <= 12 is the target
-  state.counters["runs"] = runs;
+  const std::array<double, 2> best = fastest_alternating(state, [&](std::size_t v) {
+    std::vector<Point> points;
+    PDS::sample_triangle_mesh(m, std::back_inserter(points),
+                              PDS::parameters::minimum_distance(std::sqrt(0.6965 * area / (v ? 1e6 : 1e5))));
+  });
+  state.counters["seconds_1M_over_100k"] = best[1] / best[0]; // <= 12 is the target
 }
 
 // One sampling call and nothing else (no white-noise floor, no validation): the case the profiles of
@@ -273,8 +283,21 @@ public:
   template <class Out> Out split(const Fragment& f, Out out) const { return base_.split(f, out); }
   double position_error() const { return base_.position_error(); }
 
-private:
+protected:
   const Base& base_;
+};
+
+// The same with the union test, and still without the optional refine(): the two runs of the case
+// differ by the union test only.
+class With_union_test_only : public Without_union_test
+{
+public:
+  using Without_union_test::Without_union_test;
+  template <class PointRange>
+  bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
+  {
+    return base_.is_covered_by_union(f, centers, radius);
+  }
 };
 
 // Darts per sample and time with and without the union test, same mesh, distance and seed; args: n
@@ -288,24 +311,29 @@ void union_test_case(benchmark::State& state, const std::string& name)
     auto p = [&](Mesh::Vertex_index v) { const Point& q = m.point(v); return PDS::Triangle_fragment_traits_3::Point{{q.x(), q.y(), q.z()}}; };
     traits.add_triangle(p(source(h, m)), p(target(h, m)), p(target(next(h, m), m)));
   }
+  const With_union_test_only with_union(traits);
   const Without_union_test plain(traits);
   PDS::Sampling_statistics with, without;
   std::size_t n_with = 0, n_without = 0;
-  double s_with = 0, s_without = 0;
-  for(auto _ : state) {
-    auto start = std::chrono::steady_clock::now();
-    PDS::sample_surface(traits, boost::make_function_output_iterator([&](const auto&) { ++n_with; }),
-                        PDS::parameters::minimum_distance(d).statistics(std::ref(with)));
-    s_with = seconds_since(start);
-    start = std::chrono::steady_clock::now();
-    PDS::sample_surface(plain, boost::make_function_output_iterator([&](const auto&) { ++n_without; }),
-                        PDS::parameters::minimum_distance(d).statistics(std::ref(without)));
-    s_without = seconds_since(start);
-    state.SetIterationTime(s_with + s_without);
-  }
+  const std::array<double, 3> best = fastest_alternating<3>(state, [&](std::size_t v) {
+    if(v == 0) {
+      n_with = 0;
+      PDS::sample_surface(with_union, boost::make_function_output_iterator([&](const auto&) { ++n_with; }),
+                          PDS::parameters::minimum_distance(d).statistics(std::ref(with)));
+    } else if(v == 1) {
+      n_without = 0;
+      PDS::sample_surface(plain, boost::make_function_output_iterator([&](const auto&) { ++n_without; }),
+                          PDS::parameters::minimum_distance(d).statistics(std::ref(without)));
+    } else {
+      // the model as it is, with refine(): the same darts as with_union
+      PDS::sample_surface(traits, boost::make_function_output_iterator([](const auto&) {}),
+                          PDS::parameters::minimum_distance(d));
+    }
+  });
   state.counters["darts_per_point_with_union_test"] = double(with.darts) / double(n_with);
   state.counters["darts_per_point_without"] = double(without.darts) / double(n_without);
-  state.counters["seconds_with_over_without"] = s_with / s_without;
+  state.counters["seconds_with_over_without"] = best[0] / best[1];
+  state.counters["seconds_with_refine_over_without"] = best[2] / best[1];
   // with the union test: the darts spent finding out that a fragment was covered, and the accepted ones
   state.counters["share_of_darts_on_covered_fragments"] = double(with.darts_on_covered_fragments) / double(with.darts);
   state.counters["share_of_darts_accepted"] = double(n_with) / double(with.darts);
