@@ -176,9 +176,7 @@ public:
   /// so that the exact sub-triangle lies in the ball
   bool is_covered(const Fragment& f, const Point& center, double radius) const
   {
-    const double r = radius - 4 * position_error_;
-    if(!(r > 0)) return false;
-    const double r2 = r * r * (1 - 8 * std::numeric_limits<double>::epsilon());
+    const double r2 = covering_squared_radius(radius); // negative: no squared distance is below it
     const std::array<Point, 3> c = corners(f);
     return squared_distance(c[0], center) <= r2 && squared_distance(c[1], center) <= r2 &&
            squared_distance(c[2], center) <= r2;
@@ -241,8 +239,7 @@ public:
     static constexpr int child[4][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}, {5, 4, 3}};
 
     // bit i of in[j]: point j is covered by ball i of `near`, as is_covered() decides it
-    const double r = radius - 4 * position_error_;
-    const double r2 = r > 0 ? r * r * (1 - 8 * std::numeric_limits<double>::epsilon()) : -1.;
+    const double r2 = covering_squared_radius(radius);
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
     // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
     const std::size_t n = (std::min)(std::size_t(64), std::size_t(std::distance(near.begin(), near.end())));
@@ -326,6 +323,15 @@ private:
     double area;
     std::uint8_t first; // which given corner is v0
   };
+
+  // A ball of `radius` covers a fragment if the computed corners are within the square root of this
+  // of its centre; negative if no fragment can be proven covered. The margin is more than the
+  // rounding of the corners (4 position errors) and of the squared distances (8 eps relative).
+  double covering_squared_radius(double radius) const
+  {
+    const double r = radius - 4 * position_error_;
+    return r > 0 ? r * r * (1 - 8 * std::numeric_limits<double>::epsilon()) : -1.;
+  }
 
   // the computed corners of a fragment: the right-angle corner, then along u, then along v
   std::array<Point, 3> corners(const Fragment& f) const
