@@ -553,4 +553,37 @@ TEST(NeighborBuckets, BucketHoldsEveryNeighbor)
   }
 }
 
+// Inserting points in batches makes the same buckets, in the same order, as inserting them one by one.
+TEST(NeighborBuckets, BatchInsertionIsOneByOne)
+{
+  Random rng(8);
+  const double reach = 0.05;
+  PDS::internal::Neighbor_buckets one_by_one(reach, 4, 10), in_batches(reach, 4, 10);
+  std::vector<std::array<double, 3>> points;
+  for(int i = 0; i < 5000; ++i) {
+    const double z = 2 * rng.uniform() - 1, t = 6.283185307179586 * rng.uniform(), s = std::sqrt(1 - z * z);
+    points.push_back({{-4 + s * std::cos(t), 7 + s * std::sin(t), z}});
+    one_by_one.insert(points.back());
+  }
+  // batches of 0 to 40 points; the tables grow during the batches
+  for(std::size_t i = 0; i < points.size();) {
+    const std::size_t n = (std::min)(points.size() - i, std::size_t(rng.uniform_index(41)));
+    in_batches.insert(points.data() + i, points.data() + i + n);
+    i += n;
+  }
+  EXPECT_EQ(in_batches.size(), one_by_one.size());
+  std::size_t compared = 0;
+  for(int trial = 0; trial < 3000; ++trial) {
+    std::array<double, 3> p = points[rng.uniform_index(points.size())];
+    for(double& c : p) c += 4 * reach * (rng.uniform() - 0.5);
+    const std::vector<std::array<double, 3>>* a = one_by_one.bucket(p);
+    const std::vector<std::array<double, 3>>* b = in_batches.bucket(p);
+    ASSERT_EQ(a == nullptr, b == nullptr);
+    if(!a) continue;
+    EXPECT_EQ(*a, *b);
+    compared += a->size();
+  }
+  EXPECT_GT(compared, std::size_t(10000));
+}
+
 } // namespace

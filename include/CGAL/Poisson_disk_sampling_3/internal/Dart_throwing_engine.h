@@ -201,16 +201,17 @@ public:
         if(!d.free) continue;
         d.batch_coverer = first_conflict(accepted, d.point);
         if(d.batch_coverer != none) continue;
-        if(buckets.size() >= max_points_)
+        if(buckets.size() + accepted.size() >= max_points_)
           throw Point_limit_exceeded("more than maximum_number_of_points (" + std::to_string(max_points_) +
                                      ") samples; use a larger radius or raise the bound");
-        buckets.insert(d.point);
         d.batch_coverer = accepted.size();
         accepted.push_back(d.point);
         d.accepted = true;
         ++stats.samples;
         output(*d.sample);
       }
+      // nothing reads the buckets again before the next batch: the batch's samples go in together
+      buckets.insert(accepted.data(), accepted.data() + accepted.size());
 
       // Each fragment that got a dart leaves the pool; what of it is not covered comes back as
       // children. A fragment drawn twice is handled once.

@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_NEIGHBOR_BUCKETS_H
 
 #include <CGAL/Poisson_disk_sampling_3/internal/Cell_hash_table.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
 
 #include <CGAL/assertions.h>
 
@@ -76,27 +77,55 @@ public:
     if(bucket->size() > 2) internal::prefetch(bucket->data() + 3);
   }
 
-  void insert(const Point& q)
+  void insert(const Point& q) { insert(&q, &q + 1); }
+
+  /// Inserts the points of [first, last), with the same result as `insert()` on each in turn. A point
+  /// goes to three or four buckets on average, each a hash probe and a write at the bucket's end,
+  /// all of them cache misses on a large set: here they are made in stages, each of which starts the
+  /// memory accesses of the next one for all the points, so that their misses overlap.
+  void insert(const Point* first, const Point* last)
   {
-    // The cells that meet the box [q - m, q + m]; grid_cell is monotone, so the cell of any p within
-    // reach of q is among them.
-    std::int64_t lo[3], hi[3];
-    for(int i = 0; i < 3; ++i) {
-      const double m = widened_reach(reach_, q[i]);
-      lo[i] = grid_cell(q[i] - m, inv_cell_);
-      hi[i] = grid_cell(q[i] + m, inv_cell_);
+    copies_.clear();
+    for(const Point* q = first; q != last; ++q) {
+      // The cells that meet the box [q - m, q + m]; grid_cell is monotone, so the cell of any p
+      // within reach of q is among them.
+      std::int64_t lo[3], hi[3];
+      for(int i = 0; i < 3; ++i) {
+        const double m = widened_reach(reach_, (*q)[i]);
+        lo[i] = grid_cell((*q)[i] - m, inv_cell_);
+        hi[i] = grid_cell((*q)[i] + m, inv_cell_);
+      }
+      for(std::int64_t x = lo[0]; x <= hi[0]; ++x)
+        for(std::int64_t y = lo[1]; y <= hi[1]; ++y)
+          for(std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+            copies_.push_back(Copy{Cell{x, y, z}, q, 0});
+            cells_.prefetch(x, y, z);
+          }
     }
-    for(std::int64_t x = lo[0]; x <= hi[0]; ++x)
-      for(std::int64_t y = lo[1]; y <= hi[1]; ++y)
-        for(std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const std::uint32_t b = cells_.find_or_insert(x, y, z, std::uint32_t(buckets_.size()));
-          if(b == buckets_.size()) buckets_.emplace_back();
-          buckets_[b].push_back(q);
-        }
-    ++count_;
+    // buckets are made in the order of the copies, as one insert() after the other makes them
+    for(Copy& c : copies_) {
+      c.bucket = cells_.find_or_insert(c.cell.x, c.cell.y, c.cell.z, std::uint32_t(buckets_.size()));
+      if(c.bucket == buckets_.size()) buckets_.emplace_back();
+      internal::prefetch(&buckets_[c.bucket]);
+    }
+    for(const Copy& c : copies_) {
+      const std::vector<Point>& b = buckets_[c.bucket];
+      if(b.size() < b.capacity()) internal::prefetch(b.data() + b.size());
+    }
+    for(const Copy& c : copies_) buckets_[c.bucket].push_back(*c.point);
+    count_ += std::size_t(last - first);
   }
 
 private:
+  // a copy of a point to write into the bucket of a cell
+  struct Copy
+  {
+    Cell cell;
+    const Point* point;
+    std::uint32_t bucket;
+  };
+
+  std::vector<Copy> copies_; // scratch of insert()
   double reach_, inv_cell_;
   Cell_hash_table cells_;
   std::vector<std::vector<Point>> buckets_;
