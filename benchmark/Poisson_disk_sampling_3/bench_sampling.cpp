@@ -14,7 +14,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/subdivision_method_3.h>
+
+#include "bench_meshes.h"
 
 #include <benchmark/benchmark.h>
 #include <boost/function_output_iterator.hpp>
@@ -38,25 +39,8 @@ namespace PDS = CGAL::Poisson_disk_sampling_3;
 namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
-
-// ---- inputs -------------------------------------------------------------------------------------
-
-const Mesh& mesh(const std::string& name)
-{
-  static std::map<std::string, std::unique_ptr<Mesh>> cache;
-  auto& m = cache[name];
-  if(!m) {
-    m.reset(new Mesh);
-    if(name == "armadillo_loop3") { // 52,000 faces x 4^3: 3.3 million faces
-      *m = mesh("armadillo.off");
-      CGAL::Subdivision_method_3::Loop_subdivision(*m, CGAL::parameters::number_of_iterations(3));
-    } else if(!CGAL::IO::read_polygon_mesh(std::string(CGAL_PDS_DATA_DIR) + "/" + name, *m)) {
-      throw std::runtime_error("cannot read " + name);
-    }
-  }
-  return *m;
-}
+using bench::Mesh;
+using bench::mesh;
 
 // ---- measurements -------------------------------------------------------------------------------
 

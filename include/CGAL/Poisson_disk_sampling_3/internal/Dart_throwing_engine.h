@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -61,6 +62,53 @@ struct Has_refine<Traits, std::void_t<decltype(std::declval<const Traits&>().ref
                               std::declval<std::back_insert_iterator<std::vector<typename Traits::Fragment>>>()))>>
     : std::true_type {};
 
+/// the stages of a batch, in order, as `Engine_statistics::stage_seconds` counts them
+enum Engine_stage {
+  draw_stage,     // the pool's draws; starts loading the pool entries
+  fragment_stage, // reads the entries; starts loading what random_sample() reads
+  sample_stage,   // the pool's rejection step, random_sample(), the cell; starts loading hash slots
+  bucket_stage,   // the hash probes; starts loading the bucket headers
+  points_stage,   // starts loading the buckets' first points
+  scan_stage,     // the bucket scans and the exact test of each dart
+  accept_stage,   // the darts judged in order
+  insert_stage,   // the batch's samples copied into their buckets
+  refine_stage,   // refine() or its fallback, and the pushes of the children
+  end_stage,      // the pool's removal of the fragments taken
+  number_of_stages
+};
+
+/// names of the stages, for reports
+inline const char* engine_stage_name(int stage)
+{
+  static const char* const names[number_of_stages] = {"draw", "fragment", "sample", "bucket", "points",
+                                                       "scan", "accept", "insert", "refine", "end"};
+  return names[stage];
+}
+
+/// Times each stage of the batches, with the clock read between stages, when the macro
+/// `CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES` is defined before this header is included (as the
+/// profile `benchmark/Poisson_disk_sampling_3/bench_stages.cpp` does); otherwise it is empty and
+/// costs nothing.
+class Stage_clock
+{
+public:
+#ifdef CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES
+  void start() { last_ = std::chrono::steady_clock::now(); }
+  void lap(double& seconds)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    seconds += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+private:
+  std::chrono::steady_clock::time_point last_;
+#else
+  void start() {}
+  void lap(double&) {}
+#endif
+};
+
 /// what a run did, for tests and benchmarks
 struct Engine_statistics
 {
@@ -69,6 +117,7 @@ struct Engine_statistics
   std::size_t dropped_at_max_depth = 0; // uncovered fragments dropped at the depth floor
   std::size_t darts_on_covered = 0;     // rejected darts whose fragment proved entirely covered
   std::size_t peak_active = 0;          // the most fragments in the pool at once
+  std::array<double, number_of_stages> stage_seconds{}; // see Stage_clock: zeros unless it is on
 };
 
 /// Checks a surface's total area against the point bound, before anything large is allocated.
@@ -134,6 +183,7 @@ public:
     Neighbor_buckets buckets(d_, 4, expected < max_points_ ? expected : max_points_);
     Random rng(seed_);
     Engine_statistics stats;
+    Stage_clock clock;
     std::vector<Dart> darts;
     darts.reserve(max_batch);
     std::vector<Point_d> accepted; // the samples accepted in the current batch
@@ -149,6 +199,7 @@ public:
       // free area, and a dart on a covered spot is rejected either way (design.md, "Batches").
       // Each stage below starts the memory accesses of the next one for all darts of the batch, so
       // that their cache misses overlap instead of following each other.
+      clock.start();
       pool.begin_batch();
       std::size_t n = pool.size() / 8;
       n = n < 1 ? 1 : (n > max_batch ? max_batch : n);
@@ -158,10 +209,12 @@ public:
         d.u = rng.uniform();
         pool.prefetch(d.handle);
       }
+      clock.lap(stats.stage_seconds[draw_stage]);
       for(Dart& d : darts) {
         d.item = pool.item(d.handle);
         prefetch_fragment(d.item.fragment);
       }
+      clock.lap(stats.stage_seconds[fragment_stage]);
       std::size_t m = 0;
       for(Dart& d : darts) {
         // the pool's rejection step: a refused draw is no dart
@@ -175,11 +228,14 @@ public:
       }
       darts.resize(m);
       stats.darts += m;
+      clock.lap(stats.stage_seconds[sample_stage]);
       for(Dart& d : darts) {
         d.bucket = buckets.bucket(d.cell);
         Neighbor_buckets::prefetch_header(d.bucket);
       }
+      clock.lap(stats.stage_seconds[bucket_stage]);
       for(const Dart& d : darts) Neighbor_buckets::prefetch_points(d.bucket);
+      clock.lap(stats.stage_seconds[points_stage]);
       // one scan of each bucket finds both whether the dart is free and the samples that may cover
       // its fragment, which the refinement below needs
       std::size_t near_count = 0, around_count = 0;
@@ -194,6 +250,7 @@ public:
           d.free = compare_distance_exact(d.point.data(), near_all[i].data(), d_) != CGAL::SMALLER;
       }
 
+      clock.lap(stats.stage_seconds[scan_stage]);
       accepted.clear();
       for(Dart& d : darts) {
         d.accepted = false;
@@ -211,7 +268,9 @@ public:
         output(*d.sample);
       }
       // nothing reads the buckets again before the next batch: the batch's samples go in together
+      clock.lap(stats.stage_seconds[accept_stage]);
       buckets.insert(accepted.data(), accepted.data() + accepted.size());
+      clock.lap(stats.stage_seconds[insert_stage]);
 
       // Each fragment that got a dart leaves the pool; what of it is not covered comes back as
       // children. A fragment drawn twice is handled once.
@@ -241,7 +300,9 @@ public:
         for(const Fragment& c : children) pool.push(make_item(c, depth + 1), traits_.area(c));
         stats.darts_on_covered += !d.accepted && children.empty();
       }
+      clock.lap(stats.stage_seconds[refine_stage]);
       pool.end_batch();
+      clock.lap(stats.stage_seconds[end_stage]);
     }
     return stats;
   }
