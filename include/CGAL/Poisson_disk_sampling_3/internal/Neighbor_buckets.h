@@ -9,6 +9,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -70,11 +71,14 @@ public:
   }
   static void prefetch_points(const std::vector<Point>* bucket)
   {
-    if(!bucket || bucket->empty()) return;
-    // the first two cache lines; the hardware's prefetcher follows the sequential scan (prefetching
-    // every line of the bucket measured no different)
-    internal::prefetch(bucket->data());
-    if(bucket->size() > 2) internal::prefetch(bucket->data() + 3);
+    if(!bucket) return;
+    // every cache line of the bucket (20 points, 8 lines on average), up to 16: a bucket is too
+    // short for the hardware's prefetcher to follow its scan. Against the first two lines only: 22 ns
+    // less per dart at one million points (bench_stages, stages points + scan, five alternating runs)
+    std::uintptr_t line = reinterpret_cast<std::uintptr_t>(bucket->data()) & ~std::uintptr_t(63);
+    const std::uintptr_t end =
+        (std::min)(reinterpret_cast<std::uintptr_t>(bucket->data() + bucket->size()), line + 16 * 64);
+    for(; line < end; line += 64) internal::prefetch(reinterpret_cast<const void*>(line));
   }
 
   void insert(const Point& q) { insert(&q, &q + 1); }
