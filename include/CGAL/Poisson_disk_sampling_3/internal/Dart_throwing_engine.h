@@ -88,7 +88,7 @@ inline const char* engine_stage_name(int stage)
 /// Times each stage of the batches, with the clock read between stages, when the macro
 /// `CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES` is defined before this header is included (as the
 /// profile `benchmark/Poisson_disk_sampling_3/bench_stages.cpp` does); otherwise it is empty and
-/// costs nothing.
+/// costs nothing. A program defines the macro in all of its translation units or in none.
 class Stage_clock
 {
 public:
