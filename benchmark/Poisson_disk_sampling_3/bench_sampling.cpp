@@ -18,7 +18,7 @@
 #include "bench_meshes.h"
 
 #include <benchmark/benchmark.h>
-#include <boost/function_output_iterator.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 
 #include <algorithm>
 #include <array>
