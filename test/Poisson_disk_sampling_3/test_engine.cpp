@@ -383,9 +383,9 @@ TEST(TriangleFragments, UnionCoverageIsExactAtAHoleOfAnySize)
         return P{{origin[0] + a * x[0] + b * y[0] + c * z[0], origin[1] + a * x[1] + b * y[1] + c * z[1],
                   origin[2] + a * x[2] + b * y[2] + c * z[2]}};
       };
-      // a triangle of size 0.1, and one of size 2e-9 around the hole: there the slack of the cheap
-      // proof's convexity argument (about size^2 = 4e-18) is below the depth of every hole, so that
-      // only its rounding bound keeps it from claiming coverage
+      // a triangle of size 0.1, and one of size 2e-9 around the hole: a proof that leaves a slack of
+      // about size^2 = 4e-18 (one by the convexity of the squared distances, say) would be below the
+      // depth of every hole, so that only its rounding bound would keep it from claiming coverage
       for(double size : {1., 2e-8}) {
       const P corner[3] = {at(-0.05 * size, -0.04 * size, 0), at(0.06 * size, -0.03 * size, 0),
                            at(-0.01 * size, 0.07 * size, 0)};
@@ -399,7 +399,7 @@ TEST(TriangleFragments, UnionCoverageIsExactAtAHoleOfAnySize)
         }
         const bool says = Test::covers(corner, centers, R, 0.);
         if(delta < 0) {
-          EXPECT_TRUE(says) << "offset " << offset << ", tilt " << tilt;
+          EXPECT_TRUE(says) << "offset " << offset << ", tilt " << tilt << ", size " << size << ", turn " << turn;
           continue;
         }
         // The truth, on the stored doubles (rounding far from the origin can close a tiny hole): the

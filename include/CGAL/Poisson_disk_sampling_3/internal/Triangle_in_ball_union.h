@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <type_traits>
 
 namespace CGAL {
 namespace Poisson_disk_sampling_3 {
@@ -28,13 +27,12 @@ namespace internal {
 /// can only turn a `true` into a `false`, never the reverse. (With balls of different radii the
 /// bisector planes become radical planes and the same argument holds.)
 ///
-/// A cheaper proof comes first (`by_convexity`): it settles most covered triangles with a dozen
-/// multiplications per pair of balls; the candidate-point test below runs only when it fails.
+/// Where it cannot be sure, a second proof follows (`by_convexity`): it settles tiny covered
+/// triangles, whose candidate points the rounding bounds below cannot decide.
 ///
-/// Rigour: the candidate-point test is a template on the number type, and divides nowhere (a point is
-/// kept as a numerator and a denominator). With `double` it is a fast filter that drops most
-/// triangles that are not covered. With `Bounded`, a double that carries a bound of its rounding
-/// error, the answer is `true` only if every comparison is certain; near-degenerate configurations
+/// Rigour: the test divides nowhere (a point is kept as a numerator and a denominator), and computes
+/// on `Bounded` numbers, doubles that carry a bound of their rounding error: the answer is `true`
+/// only if every comparison is certain; near-degenerate configurations
 /// (an edge parallel to a bisector plane through it, three centres whose bisectors do not meet in one
 /// point) answer `false`, and the engine then splits the fragment, which is always safe. Points are
 /// taken relative to the first corner, which keeps the bounds small far from the origin.
@@ -101,20 +99,24 @@ public:
       kept[k++] = Point{{c[0], c[1], c[2]}};
     }
     if(k == 0) return false;
-    if(by_convexity(corner, kept, k, r)) return true;
-    if(!decide<double>(corner, kept, k, radius, corner_error)) return false;
-    return decide<Bounded>(corner, kept, k, radius, corner_error);
+    // (Nothing cheaper comes first: a `Bounded` operation costs about what a double one does, and a
+    // triangle that is not covered fails at one of the first candidate points.)
+    const Verdict verdict = decide(corner, kept, k, radius, corner_error);
+    return verdict == covered || (verdict == unsure && by_convexity(corner, kept, k, r));
   }
 
 private:
-  // The cheap proof. g_i(x) = |x - c_i|^2 - r^2 is convex, so on T, g_i(x) <= sum_k l_k g_i(v_k) for
-  // the barycentric coordinates l of x. If weights m_i >= 0 make sum_i m_i g_i(v_k) < 0 at the three
-  // corners v_k, then sum_i m_i g_i(x) < 0 on all of T, so some g_i(x) < 0: every point of T is
-  // strictly inside a ball. The best weights solve a linear program whose optimum has at most three
-  // positive weights (three corner constraints and the normalisation), so trying every pair and
-  // triple of balls finds them; a weight vector is accepted only if the corner sums are negative by
-  // more than a bound on their rounding error. Blind only where T's points are within about
-  // diameter(T)^2 / 2r of the union's boundary: the full test below handles those.
+  // The proof for what the candidate-point test is unsure of. g_i(x) = |x - c_i|^2 - r^2 is convex,
+  // so on T, g_i(x) <= sum_k l_k g_i(v_k) for the barycentric coordinates l of x. If weights m_i >= 0
+  // make sum_i m_i g_i(v_k) < 0 at the three corners v_k, then sum_i m_i g_i(x) < 0 on all of T, so
+  // some g_i(x) < 0: every point of T is strictly inside a ball. The best weights solve a linear
+  // program whose optimum has at most three positive weights (three corner constraints and the
+  // normalisation), so trying every pair and triple of balls finds them; a weight vector is accepted
+  // only if the corner sums are negative by more than a bound on their rounding error. Blind only
+  // where T's points are within about diameter(T)^2 / 2r of the union's boundary (3 in 10 of the
+  // covered triangles that reach the union test on lion.off), but its rounding bounds do not grow as
+  // T shrinks, where those of the candidate points do: it proves the tiny covered triangles that the
+  // candidate-point test cannot.
   static bool by_convexity(const Point (&corner)[3], const Point* centers, std::size_t k, double r)
   {
     const double r2 = r * r;
@@ -205,35 +207,31 @@ private:
   };
 #endif
 
-  // Inputs and constants, and sign tests: plain for double (the filter), only what the error bound
-  // makes certain for Bounded (the proof).
-  template <class NT>
-  static NT number(double x)
-  {
-    if constexpr(std::is_same_v<NT, double>) return x;
-    else return NT::of(x, std::abs(x));
-  }
-  static bool negative(double x) { return x < 0; }
-  static bool positive(double x) { return x > 0; }
+  // Inputs and constants, and the sign tests: only what the error bound makes certain.
+  static Bounded number(double x) { return Bounded::of(x, std::abs(x)); }
   static bool negative(const Bounded& x) { return x.v() < -(1e-13 * x.a() + 1e-280); }
   static bool positive(const Bounded& x) { return x.v() > 1e-13 * x.a() + 1e-280; }
 
-  template <class NT>
   struct V
   {
-    NT x, y, z;
+    Bounded x, y, z;
     V operator-(const V& o) const { return V{x - o.x, y - o.y, z - o.z}; }
     V operator+(const V& o) const { return V{x + o.x, y + o.y, z + o.z}; }
-    V operator*(const NT& s) const { return V{x * s, y * s, z * s}; }
-    NT dot(const V& o) const { return x * o.x + y * o.y + z * o.z; }
+    V operator*(const Bounded& s) const { return V{x * s, y * s, z * s}; }
+    Bounded dot(const V& o) const { return x * o.x + y * o.y + z * o.z; }
     V cross(const V& o) const { return V{y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
   };
 
+  // `covered` is a proof. `not_covered`: a candidate point was found outside every ball beyond the
+  // rounding bounds, so no other proof can succeed (a hint, used only to skip `by_convexity`).
+  // `unsure`: some comparison was within the rounding bounds.
+  enum Verdict { covered, not_covered, unsure };
+
   // The candidate-point test of the class comment. Without division: each candidate point is kept as
   // N / den, it is strictly inside ball i iff |N - c_i den|^2 < r^2 den^2, and outside an edge of T
-  // by the sign of a polynomial times the sign of den. Any step that is not certain answers false.
-  template <class NT>
-  static bool decide(const Point (&corner)[3], const Point* centers, std::size_t k, double radius, double shrink)
+  // by the sign of a polynomial times the sign of den. Any step that is not certain is not a proof.
+  static Verdict decide(const Point (&corner)[3], const Point* centers, std::size_t k, double radius,
+                        double shrink)
   {
     const Point& o = corner[0];
     int e;
@@ -241,80 +239,83 @@ private:
     // exact (and cheaper than ldexp); the scaled radius is m
     const double scale = std::frexp(radius, &e) / radius;
     auto rel = [&](const Point& p) {
-      return V<NT>{number<NT>((p[0] - o[0]) * scale), number<NT>((p[1] - o[1]) * scale),
-                   number<NT>((p[2] - o[2]) * scale)};
+      return V{number((p[0] - o[0]) * scale), number((p[1] - o[1]) * scale), number((p[2] - o[2]) * scale)};
     };
-    const NT rr = number<NT>((radius - shrink) * scale);
-    const NT r2 = rr * rr;
-    const NT zero = number<NT>(0), one = number<NT>(1), half = number<NT>(0.5);
-    V<NT> c[max_balls];
-    NT c2[max_balls]; // |c_i|^2 / 2: the bisector plane of i and j is x . (c_j - c_i) = c2[j] - c2[i]
+    const Bounded rr = number((radius - shrink) * scale);
+    const Bounded r2 = rr * rr;
+    const Bounded zero = number(0), one = number(1), half = number(0.5);
+    V c[max_balls];
+    Bounded c2[max_balls]; // |c_i|^2 / 2: the bisector plane of i and j is x . (c_j - c_i) = c2[j] - c2[i]
     for(std::size_t i = 0; i < k; ++i) {
       c[i] = rel(centers[i]);
       c2[i] = c[i].dot(c[i]) * half;
     }
-    const V<NT> v[3] = {V<NT>{zero, zero, zero}, rel(corner[1]), rel(corner[2])};
-    const V<NT> n = v[1].cross(v[2]); // T's plane is n . x = 0
+    const V v[3] = {V{zero, zero, zero}, rel(corner[1]), rel(corner[2])};
+    const V n = v[1].cross(v[2]); // T's plane is n . x = 0
 
     // strictly inside some ball; the ball that held the last point is tried first, since the
     // points tested one after the other are close
     std::size_t last = 0;
-    auto covered = [&](const V<NT>& N, const NT& den) {
-      const NT d2 = r2 * den * den;
+    bool sure = true; // after `inside` returned false: whether every ball was certainly outside
+    auto inside = [&](const V& N, const Bounded& den) {
+      const Bounded d2 = r2 * den * den;
+      sure = true;
       for(std::size_t step = 0; step < k; ++step) {
         const std::size_t m = (last + step) % k;
-        const V<NT> w = N - c[m] * den;
-        if(negative(w.dot(w) - d2)) {
+        const V w = N - c[m] * den;
+        const Bounded excess = w.dot(w) - d2;
+        if(negative(excess)) {
           last = m;
           return true;
         }
+        sure = sure && positive(excess);
       }
       return false;
     };
 
-    for(const V<NT>& p : v)
-      if(!covered(p, one)) return false;
+    for(const V& p : v)
+      if(!inside(p, one)) return sure ? not_covered : unsure;
 
     // edges meet bisector planes
     for(int ed = 0; ed < 3; ++ed) {
-      const V<NT>& p = v[ed];
-      const V<NT> d = v[(ed + 1) % 3] - p;
+      const V& p = v[ed];
+      const V d = v[(ed + 1) % 3] - p;
       for(std::size_t i = 0; i < k; ++i)
         for(std::size_t j = i + 1; j < k; ++j) {
-          const V<NT> m = c[j] - c[i];
-          const NT h = c2[j] - c2[i];
+          const V m = c[j] - c[i];
+          const Bounded h = c2[j] - c2[i];
           // signed offsets of the edge's ends from the plane: no crossing if both are strictly on one side
-          const NT s0 = p.dot(m) - h, s1 = s0 + d.dot(m);
+          const Bounded s0 = p.dot(m) - h, s1 = s0 + d.dot(m);
           if((positive(s0) && positive(s1)) || (negative(s0) && negative(s1))) continue;
-          const NT den = s0 - s1;
-          if(!positive(den) && !negative(den)) return false; // the edge may lie in the plane
-          if(!covered(p * den + d * s0, den)) return false;   // the point p + d s0 / den
+          const Bounded den = s0 - s1;
+          if(!positive(den) && !negative(den)) return unsure; // the edge may lie in the plane
+          if(!inside(p * den + d * s0, den)) return sure ? not_covered : unsure; // p + d s0 / den
         }
     }
 
     // points of T's plane equidistant from three centres
     for(std::size_t i = 0; i < k; ++i)
       for(std::size_t j = i + 1; j < k; ++j) {
-        const V<NT> m1 = c[j] - c[i];
-        const NT h1 = c2[j] - c2[i];
+        const V m1 = c[j] - c[i];
+        const Bounded h1 = c2[j] - c2[i];
         for(std::size_t l = j + 1; l < k; ++l) {
-          const V<NT> m2 = c[l] - c[i];
-          const NT h2 = c2[l] - c2[i];
-          const NT det = n.dot(m1.cross(m2));
+          const V m2 = c[l] - c[i];
+          const Bounded h2 = c2[l] - c2[i];
+          const Bounded det = n.dot(m1.cross(m2));
           const bool up = positive(det);
-          if(!up && !negative(det)) return false; // the three bisectors may not meet in one point
-          const V<NT> N = m2.cross(n) * h1 + n.cross(m1) * h2; // the point is N / det
+          if(!up && !negative(det)) return unsure; // the three bisectors may not meet in one point
+          const V N = m2.cross(n) * h1 + n.cross(m1) * h2; // the point is N / det
           bool outside = false;
           for(int ed = 0; ed < 3 && !outside; ++ed) {
             // ((v_e+1 - v_e) x (N / det - v_e)) . n < 0, multiplied by det^2
-            const NT side = (v[(ed + 1) % 3] - v[ed]).cross(N - v[ed] * det).dot(n);
+            const Bounded side = (v[(ed + 1) % 3] - v[ed]).cross(N - v[ed] * det).dot(n);
             outside = up ? negative(side) : positive(side);
           }
           if(outside) continue;
-          if(!covered(N, det)) return false;
+          if(!inside(N, det)) return sure ? not_covered : unsure;
         }
       }
-    return true;
+    return covered;
   }
 };
 
