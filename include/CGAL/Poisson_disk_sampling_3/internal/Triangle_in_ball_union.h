@@ -276,22 +276,22 @@ private:
     for(const V& p : v)
       if(!inside(p, one)) return sure ? not_covered : unsure;
 
-    // edges meet bisector planes
-    for(int ed = 0; ed < 3; ++ed) {
-      const V& p = v[ed];
-      const V d = v[(ed + 1) % 3] - p;
-      for(std::size_t i = 0; i < k; ++i)
-        for(std::size_t j = i + 1; j < k; ++j) {
-          const V m = c[j] - c[i];
-          const Bounded h = c2[j] - c2[i];
-          // signed offsets of the edge's ends from the plane: no crossing if both are strictly on one side
-          const Bounded s0 = p.dot(m) - h, s1 = s0 + d.dot(m);
+    // edges meet bisector planes: the signed offset of each corner from a plane is computed once
+    const V d[3] = {v[1], v[2] - v[1], v[0] - v[2]}; // edge e goes from v[e] to v[e + 1]
+    for(std::size_t i = 0; i < k; ++i)
+      for(std::size_t j = i + 1; j < k; ++j) {
+        const V m = c[j] - c[i];
+        const Bounded h = c2[j] - c2[i];
+        const Bounded s[3] = {zero - h, v[1].dot(m) - h, v[2].dot(m) - h};
+        for(int ed = 0; ed < 3; ++ed) {
+          // no crossing if both ends are strictly on one side
+          const Bounded &s0 = s[ed], &s1 = s[(ed + 1) % 3];
           if((positive(s0) && positive(s1)) || (negative(s0) && negative(s1))) continue;
           const Bounded den = s0 - s1;
           if(!positive(den) && !negative(den)) return unsure; // the edge may lie in the plane
-          if(!inside(p * den + d * s0, den)) return sure ? not_covered : unsure; // p + d s0 / den
+          if(!inside(v[ed] * den + d[ed] * s0, den)) return sure ? not_covered : unsure; // v + d s0 / den
         }
-    }
+      }
 
     // points of T's plane equidistant from three centres
     for(std::size_t i = 0; i < k; ++i)
