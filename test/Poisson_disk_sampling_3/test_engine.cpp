@@ -385,7 +385,9 @@ TEST(TriangleFragments, UnionCoverageIsExactAtAHoleOfAnySize)
       };
       // a triangle of size 0.1, and one of size 2e-9 around the hole: a proof that leaves a slack of
       // about size^2 = 4e-18 (one by the convexity of the squared distances, say) would be below the
-      // depth of every hole, so that only its rounding bound would keep it from claiming coverage
+      // depth of every hole, so that only its rounding bound would keep it from claiming coverage;
+      // and the covered triangles of that size (delta < 0) are beyond what the rounding bounds of the
+      // candidate-point test can decide, so they need the proof by convexity
       for(double size : {1., 2e-8}) {
       const P corner[3] = {at(-0.05 * size, -0.04 * size, 0), at(0.06 * size, -0.03 * size, 0),
                            at(-0.01 * size, 0.07 * size, 0)};
