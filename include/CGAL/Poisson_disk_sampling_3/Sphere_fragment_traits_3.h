@@ -433,7 +433,7 @@ private:
   {
     Ball b;
     b.w = w;
-    longitude_of(b);
+    b.wxy = std::sqrt(w[0] * w[0] + w[1] * w[1]);
     return min_dot(f, b, cos0, sin0, cos1, sin1);
   }
 
@@ -442,18 +442,8 @@ private:
   {
     Point w;          // centre minus the sphere's centre
     double wxy;       // the length of (wx, wy)
-    double away;      // the longitude of -w, where the theta part is smallest (if wxy > 0)
     double threshold; // the rectangle is in the ball if min_dot() is at least this
   };
-  static void longitude_of(Ball& b)
-  {
-    b.wxy = std::sqrt(b.w[0] * b.w[0] + b.w[1] * b.w[1]);
-    b.away = 0;
-    if(b.wxy > 0) {
-      b.away = std::atan2(-b.w[1], -b.w[0]);
-      if(b.away < 0) b.away += 2 * pi();
-    }
-  }
   Ball ball(const Point& center, double radius) const
   {
     // |x - s|^2 = R^2 + |w|^2 - 2 R (u . w) for x = c + R u on the sphere and w = s - c, so the
@@ -464,7 +454,7 @@ private:
     const double t = (r_ * r_ + w2 - radius * radius) / (2 * r_);
     const double margin = error_ * (1 + (std::sqrt(w2) + radius) / r_) * (1 + radius / r_);
     b.threshold = t + margin;
-    longitude_of(b);
+    b.wxy = std::sqrt(b.w[0] * b.w[0] + b.w[1] * b.w[1]);
     return b;
   }
 
@@ -472,7 +462,14 @@ private:
   {
     const Point& w = b.w;
     double m = (std::min)(w[0] * cos0 + w[1] * sin0, w[0] * cos1 + w[1] * sin1);
-    if(b.wxy > 0 && f.theta0 <= b.away && b.away <= f.theta1) m = -b.wxy;
+    if(b.wxy > 0) {
+      // whether the longitude of -w is in [theta0, theta1], by the signs of the cross products of
+      // -w with the directions of the ends: no arctangent. (Where rounding decides, -w is within a
+      // few rounding errors of an end, and the two values of m differ by their square.)
+      const double after0 = w[0] * sin0 - w[1] * cos0;  // -w is counterclockwise of theta0
+      const double before1 = w[1] * cos1 - w[0] * sin1; // -w is clockwise of theta1
+      m = (f.theta1 - f.theta0 <= pi() ? after0 >= 0 && before1 >= 0 : after0 >= 0 || before1 >= 0) ? -b.wxy : m;
+    }
     auto g = [&](double z) { return m * rho_of(z) + w[2] * z; };
     double result = (std::min)(g(f.z0), g(f.z1));
     const double k = std::sqrt(m * m + w[2] * w[2]);
