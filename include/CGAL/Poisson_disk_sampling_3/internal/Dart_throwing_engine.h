@@ -187,9 +187,10 @@ public:
     std::vector<Dart> darts;
     darts.reserve(max_batch);
     std::vector<Point_d> accepted; // the samples accepted in the current batch
-    std::vector<Point_d> near;     // samples within D of a dart: the only possible single coverers of F
-    std::vector<Point_d> around;   // samples within 2D of a dart: they may cover F together
-    std::vector<Point_d> near_all, around_all; // the same for every dart of a batch, before the batch
+    // for the k-th dart of a batch: the samples within D of it (the only possible single coverers of
+    // its fragment F), and within 2D (they may cover F together); kept from batch to batch, so that
+    // their storage is reused
+    std::vector<std::vector<Point_d>> near(max_batch), around(max_batch);
     std::vector<Fragment> children;
 
     while(!pool.empty()) {
@@ -244,18 +245,15 @@ public:
       // its fragment, which the refinement below needs. The batch's buckets (8 cache lines each on
       // average) do not all fit in the first-level cache, where the stage above asked for them: the
       // scan asks again for the bucket a few darts ahead, which then comes from the second level.
-      std::size_t near_count = 0, around_count = 0;
       for(std::size_t k = 0; k < darts.size(); ++k) {
         Dart& d = darts[k];
         if(k + lookahead < darts.size()) Neighbor_buckets::prefetch_points(darts[k + lookahead].bucket);
-        d.near_begin = near_count;
-        d.around_begin = around_count;
-        if(d.bucket) gather_near(*d.bucket, d.point, near_all, near_count, around_all, around_count);
-        d.near_end = near_count;
-        d.around_end = around_count;
+        near[k].clear();
+        around[k].clear();
+        if(d.bucket) gather_near(*d.bucket, d.point, near[k], around[k]);
         d.free = true;
-        for(std::size_t i = d.near_begin; i < d.near_end && d.free; ++i)
-          d.free = compare_distance_exact(d.point.data(), near_all[i].data(), d_) != CGAL::SMALLER;
+        for(std::size_t i = 0; i < near[k].size() && d.free; ++i)
+          d.free = compare_distance_exact(d.point.data(), near[k][i].data(), d_) != CGAL::SMALLER;
       }
 
       clock.lap(stats.stage_seconds[scan_stage]);
@@ -282,22 +280,21 @@ public:
 
       // Each fragment that got a dart leaves the pool; what of it is not covered comes back as
       // children. A fragment drawn twice is handled once.
-      for(const Dart& d : darts) {
+      for(std::size_t k = 0; k < darts.size(); ++k) {
+        const Dart& d = darts[k];
         if(!pool.take(d.handle)) continue;
         // The samples that may cover F: the ones near the dart before the batch, and the dart's own
         // sample or the sample of the batch that refused it. (The batch's other samples are rarely
         // near: leaving them out costs 0.7% more darts, and scanning them for every dart more time.)
-        near.assign(near_all.begin() + d.near_begin, near_all.begin() + d.near_end);
-        around.assign(around_all.begin() + d.around_begin, around_all.begin() + d.around_end);
         if(d.batch_coverer != none) {
-          near.push_back(accepted[d.batch_coverer]);
-          around.push_back(accepted[d.batch_coverer]);
+          near[k].push_back(accepted[d.batch_coverer]);
+          around[k].push_back(accepted[d.batch_coverer]);
         }
         // F itself gets the single-ball test only: it is rarely covered by the union when no single
         // ball covers it, and if it is, its children are, and the union test on them drops them
         const int depth = depth_of(d.item);
         children.clear();
-        if(refine(d.item.fragment, depth, near, around, children)) {
+        if(refine(d.item.fragment, depth, near[k], around[k], children)) {
           stats.darts_on_covered += !d.accepted;
           continue;
         }
@@ -354,8 +351,6 @@ private:
     Point_d point;
     Neighbor_buckets::Cell cell;
     const std::vector<Point_d>* bucket;
-    std::size_t near_begin, near_end;     // its samples within D (and a few just outside) in near_all
-    std::size_t around_begin, around_end; // its samples within 2D in around_all
     bool free;                      // at distance >= D from the samples before the batch
     std::size_t batch_coverer;      // in `accepted`: its own sample or the first within D, else none
     bool accepted;
@@ -391,12 +386,12 @@ private:
     return none;
   }
 
-  // appends to `near` and `around` (from positions n and a, which it advances) the samples of
-  // `bucket` within D (and a few just outside) and within 2D of p. The scan has no branches (which
-  // samples are within 2D of a dart is a coin toss for the branch predictor) and writes only the
-  // positions of the samples it finds; they are copied after.
+  // appends to `near` and `around` the samples of `bucket` within D (and a few just outside) and
+  // within 2D of p. The scan has no branches (which samples are within 2D of a dart is a coin toss
+  // for the branch predictor) and writes only the positions of the samples it finds; they are
+  // copied after.
   void gather_near(const std::vector<Point_d>& bucket, const Point_d& p, std::vector<Point_d>& near,
-                   std::size_t& n, std::vector<Point_d>& around, std::size_t& a)
+                   std::vector<Point_d>& around)
   {
     const std::size_t size = bucket.size();
     if(hits_.size() < 2 * size) hits_.resize(2 * size);
@@ -413,10 +408,8 @@ private:
       hit_around[ha] = std::uint32_t(i);
       ha += d2 <= d2_around;
     }
-    if(near.size() < n + hn) near.resize((std::max)(n + hn, 2 * near.size()));
-    if(around.size() < a + ha) around.resize((std::max)(a + ha, 2 * around.size()));
-    for(std::size_t i = 0; i < hn; ++i) near[n++] = bucket[hit_near[i]];
-    for(std::size_t i = 0; i < ha; ++i) around[a++] = bucket[hit_around[i]];
+    for(std::size_t i = 0; i < hn; ++i) near.push_back(bucket[hit_near[i]]);
+    for(std::size_t i = 0; i < ha; ++i) around.push_back(bucket[hit_around[i]]);
   }
 
   // True if one point of `near` covers f. Otherwise, unless f is at the depth floor, writes the
