@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace CGAL {
 namespace Poisson_disk_sampling_3 {
@@ -278,11 +279,19 @@ private:
 
     // edges meet bisector planes: the signed offset of each corner from a plane is computed once
     const V d[3] = {v[1], v[2] - v[1], v[0] - v[2]}; // edge e goes from v[e] to v[e + 1]
+    // bit j of misses[i]: the bisector plane of i and j certainly misses T, and so does every point
+    // equidistant from i, j and a third centre (it is on that plane): the loop below skips them
+    std::uint32_t misses[max_balls] = {};
     for(std::size_t i = 0; i < k; ++i)
       for(std::size_t j = i + 1; j < k; ++j) {
         const V m = c[j] - c[i];
         const Bounded h = c2[j] - c2[i];
         const Bounded s[3] = {zero - h, v[1].dot(m) - h, v[2].dot(m) - h};
+        const bool above = positive(s[0]) && positive(s[1]) && positive(s[2]);
+        if(above || (negative(s[0]) && negative(s[1]) && negative(s[2]))) {
+          misses[i] |= std::uint32_t(1) << j;
+          continue;
+        }
         for(int ed = 0; ed < 3; ++ed) {
           // no crossing if both ends are strictly on one side
           const Bounded &s0 = s[ed], &s1 = s[(ed + 1) % 3];
@@ -293,12 +302,14 @@ private:
         }
       }
 
-    // points of T's plane equidistant from three centres
+    // points of T's plane equidistant from three centres, but for those on a plane that misses T
     for(std::size_t i = 0; i < k; ++i)
       for(std::size_t j = i + 1; j < k; ++j) {
+        if(misses[i] >> j & 1) continue;
         const V m1 = c[j] - c[i];
         const Bounded h1 = c2[j] - c2[i];
         for(std::size_t l = j + 1; l < k; ++l) {
+          if((misses[i] >> l & 1) || (misses[j] >> l & 1)) continue;
           const V m2 = c[l] - c[i];
           const Bounded h2 = c2[l] - c2[i];
           const Bounded det = n.dot(m1.cross(m2));
