@@ -160,9 +160,9 @@ public:
   /// Optional operation of `SurfaceFragmentTraits_3`: the engine's step for a fragment that got a
   /// dart, with the same answers as `is_covered()`, `split()` and `is_covered_by_union()` called one
   /// by one, in less time: the cosines and sines of the three longitudes the five rectangles share
-  /// are computed once. Returns `true` if one point of `near` covers `f`
-  /// (and writes nothing); otherwise writes the children of `f` that neither one point of `near` nor
-  /// the union of the balls around `around` covers.
+  /// are computed once. Returns `true` if one point of `near` covers `f` (and writes nothing);
+  /// otherwise writes the children of `f` that neither one point of `near` nor the union of the balls
+  /// around `around` covers.
   template <class PointRange, class OutputIterator>
   bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
               OutputIterator children) const
