@@ -433,7 +433,7 @@ private:
   {
     Ball b;
     b.w = w;
-    b.wxy = std::sqrt(w[0] * w[0] + w[1] * w[1]);
+    b.wxy = length_xy(w);
     return min_dot(f, b, cos0, sin0, cos1, sin1);
   }
 
@@ -444,6 +444,7 @@ private:
     double wxy;       // the length of (wx, wy)
     double threshold; // the rectangle is in the ball if min_dot() is at least this
   };
+  static double length_xy(const Point& w) { return std::sqrt(w[0] * w[0] + w[1] * w[1]); }
   Ball ball(const Point& center, double radius) const
   {
     // |x - s|^2 = R^2 + |w|^2 - 2 R (u . w) for x = c + R u on the sphere and w = s - c, so the
@@ -454,7 +455,7 @@ private:
     const double t = (r_ * r_ + w2 - radius * radius) / (2 * r_);
     const double margin = error_ * (1 + (std::sqrt(w2) + radius) / r_) * (1 + radius / r_);
     b.threshold = t + margin;
-    b.wxy = std::sqrt(b.w[0] * b.w[0] + b.w[1] * b.w[1]);
+    b.wxy = length_xy(b.w);
     return b;
   }
 
