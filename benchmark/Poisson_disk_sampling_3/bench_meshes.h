@@ -11,6 +11,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -19,6 +20,10 @@
 namespace bench {
 
 typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Mesh;
+
+/// The minimum distance that gives about `n` points on a surface of area `area`: a maximal set covers
+/// about 0.6965 area / d^2 points (the jamming density of maximal Poisson-disk sets in the plane).
+inline double distance_for(double area, double n) { return std::sqrt(0.6965 * area / n); }
 
 /// A file of CGAL's data set (`lion.off`, ...), or "armadillo_loop3": armadillo.off Loop-subdivided
 /// three times, 52,000 faces x 4^3 = 3.3 million faces. Read or made once per process.

@@ -40,6 +40,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 using bench::Mesh;
+using bench::distance_for;
 using bench::mesh;
 
 // ---- measurements -------------------------------------------------------------------------------
@@ -111,7 +112,7 @@ void mesh_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
   const double area = PMP::area(m);
-  const double d = std::sqrt(0.6965 * area / double(state.range(0)));
+  const double d = distance_for(area, double(state.range(0)));
   std::vector<Point> points;
   double seconds = 0, peak = 0;
   PDS::Sampling_statistics stats;
@@ -142,7 +143,7 @@ void mesh_case(benchmark::State& state, const std::string& name)
 void sphere_case(benchmark::State& state)
 {
   const K::Sphere_3 sphere(CGAL::ORIGIN, 1);
-  const double d = std::sqrt(0.6965 * 4 * 3.14159265358979323846 / double(state.range(0)));
+  const double d = distance_for(4 * 3.14159265358979323846, double(state.range(0)));
   std::vector<Point> points;
   PDS::Sampling_statistics stats;
   double seconds = 0;
@@ -223,7 +224,7 @@ void linearity_case(benchmark::State& state, const std::string& name)
   const std::array<double, 2> best = fastest_alternating(state, [&](std::size_t v) {
     std::vector<Point> points;
     PDS::sample_triangle_mesh(m, std::back_inserter(points),
-                              PDS::parameters::minimum_distance(std::sqrt(0.6965 * area / (v ? 1e6 : 1e5))));
+                              PDS::parameters::minimum_distance(distance_for(area, v ? 1e6 : 1e5)));
   });
   state.counters["seconds_1M_over_100k"] = best[1] / best[0]; // <= 12 is the target
 }
@@ -233,7 +234,7 @@ void linearity_case(benchmark::State& state, const std::string& name)
 void sampling_only_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
-  const double d = std::sqrt(0.6965 * PMP::area(m) / double(state.range(0)));
+  const double d = distance_for(PMP::area(m), double(state.range(0)));
   PDS::Sampling_statistics stats;
   std::size_t n = 0;
   for(auto _ : state) {
@@ -292,7 +293,7 @@ public:
 void union_test_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
-  const double d = std::sqrt(0.6965 * PMP::area(m) / double(state.range(0)));
+  const double d = distance_for(PMP::area(m), double(state.range(0)));
   PDS::Triangle_fragment_traits_3 traits;
   for(auto f : faces(m)) {
     const auto h = halfedge(f, m);

@@ -25,7 +25,7 @@ namespace PDS = CGAL::Poisson_disk_sampling_3;
 void stages_case(benchmark::State& state, const std::string& name)
 {
   const bench::Mesh& m = bench::mesh(name);
-  const double d = std::sqrt(0.6965 * CGAL::Polygon_mesh_processing::area(m) / double(state.range(0)));
+  const double d = bench::distance_for(CGAL::Polygon_mesh_processing::area(m), double(state.range(0)));
   std::vector<bench::Mesh::Face_index> face_of;
   const PDS::Triangle_fragment_traits_3 traits =
       PDS::internal::triangles_of_mesh(m, CGAL::parameters::default_values(), face_of);
