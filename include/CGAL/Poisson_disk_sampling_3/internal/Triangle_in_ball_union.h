@@ -33,10 +33,10 @@ namespace internal {
 ///
 /// Rigour: the test divides nowhere (a point is kept as a numerator and a denominator), and computes
 /// on `Bounded` numbers, doubles that carry a bound of their rounding error: the answer is `true`
-/// only if every comparison is certain; near-degenerate configurations
-/// (an edge parallel to a bisector plane through it, three centres whose bisectors do not meet in one
-/// point) answer `false`, and the engine then splits the fragment, which is always safe. Points are
-/// taken relative to the first corner, which keeps the bounds small far from the origin.
+/// only if every comparison is certain; near-degenerate configurations (an edge parallel to a
+/// bisector plane through it, three centres whose bisectors do not meet in one point) answer
+/// `false`, and the engine then splits the fragment, which is always safe. Points are taken relative
+/// to the first corner, which keeps the bounds small far from the origin.
 ///
 /// The triangle is given by the double corners computed by the model; the exact triangle's corners
 /// are within `corner_error` of them, so every point of the exact triangle is within `corner_error`
