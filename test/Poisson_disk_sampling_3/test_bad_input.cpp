@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 namespace {
@@ -102,6 +103,56 @@ TEST(BadInput, BoundHoldsWhileSampling)
   out.clear();
   PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(1.));
   EXPECT_EQ(out.size(), 1000u);
+}
+
+// A count whose bound is not reached works even where area / (pi r^2) at the distance tried would
+// exceed the bound; the largest bounds convert without overflow; a count is a whole number.
+TEST(BadInput, CountsAndBoundsAtTheirExtremes)
+{
+  const Mesh m = triangle();
+  std::vector<Point> out;
+  // the distance tried for 600 points has area / (pi r^2) near 1,100
+  PDS::sample_triangle_mesh(m, std::back_inserter(out),
+                            PDS::parameters::number_of_points(600).maximum_number_of_points(1000));
+  EXPECT_NEAR(double(out.size()), 600., 6.);
+  EXPECT_THROW(sample(m, PDS::parameters::number_of_points(1001).maximum_number_of_points(1000)),
+               PDS::Point_limit_exceeded);
+  out.clear();
+  const std::size_t largest = std::numeric_limits<std::size_t>::max();
+  PDS::sample_triangle_mesh(m, std::back_inserter(out), PDS::parameters::radius(0.05).maximum_number_of_points(largest));
+  EXPECT_GT(out.size(), 10u);
+  EXPECT_THROW(sample(m, PDS::parameters::number_of_points(largest)), PDS::Point_limit_exceeded);
+  EXPECT_THROW(sample(m, PDS::parameters::number_of_points(2.5)), PDS::Invalid_input);
+}
+
+// Squares of distances below the smallest normal double lose their relative precision: the
+// distances are bounded, and within the bounds, triangles far from unit size sample as at unit size.
+TEST(BadInput, DistancesOutsideTheHandledRange)
+{
+  for(int e : {-420, 420}) {
+    const double s = std::ldexp(1., e);
+    Mesh m;
+    m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(s, 0, 0)), m.add_vertex(Point(0, s, 0)));
+    EXPECT_THROW(sample(m, PDS::parameters::minimum_distance(0.1 * s)), PDS::Invalid_input) << e;
+    EXPECT_THROW(PDS::is_maximal(m, std::vector<Point>{Point(0, 0, 0)}, 0.1 * s), PDS::Invalid_input) << e;
+    std::vector<Point> out;
+    EXPECT_THROW(PDS::sample_sphere(K::Sphere_3(Point(0, 0, 0), s * s), std::back_inserter(out),
+                                    PDS::parameters::minimum_distance(0.3 * s)),
+                 PDS::Invalid_input)
+        << e;
+  }
+  // the area of a triangle is the length of a cross product, whose square underflows (2^-1200) or
+  // overflows (2^1200) here
+  for(int e : {-300, 300}) {
+    const double s = std::ldexp(1., e);
+    Mesh m;
+    m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(s, 0, 0)), m.add_vertex(Point(0, s, 0)));
+    std::vector<Point> out;
+    PDS::sample_triangle_mesh(m, std::back_inserter(out), PDS::parameters::minimum_distance(0.1 * s));
+    EXPECT_GT(out.size(), 10u) << e;
+    EXPECT_TRUE(PDS::is_poisson_disk_set(out, 0.1 * s)) << e;
+    EXPECT_TRUE(PDS::is_maximal(m, out, 0.1 * s)) << e;
+  }
 }
 
 TEST(BadInput, RadiusBelowCoordinatePrecision)

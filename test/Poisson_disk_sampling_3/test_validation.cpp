@@ -31,6 +31,20 @@ TEST(IsPoissonDiskSet, DecidesExactlyAtTheThreshold)
   EXPECT_FALSE(PDS::is_poisson_disk_set(pq, std::nextafter(5., 6.)));
 }
 
+// Where d^2 is a subnormal double, its rounding error is absolute, not relative: the floating-point
+// filter must not decide there. Each square below rounds up: 86 + 86 + 85 units of 2^-1074 against
+// 256 for d^2, while the exact |p - q| is 0.99961 d.
+TEST(IsPoissonDiskSet, DecidesExactlyWhereSquaresAreSubnormal)
+{
+  const double d = std::ldexp(1., -533);
+  const double a = std::sqrt(85.6) * std::ldexp(1., -537), b = std::sqrt(84.6) * std::ldexp(1., -537);
+  const std::vector<Point> pair = {Point(0, 0, 0), Point(a, a, b)};
+  typedef CGAL::Exact_rational ET;
+  const ET s = ET(a) * ET(a) * 2 + ET(b) * ET(b);
+  ASSERT_LT(s, ET(d) * ET(d)) << "the pair is closer than d";
+  EXPECT_FALSE(PDS::is_poisson_disk_set(pair, d));
+}
+
 TEST(IsPoissonDiskSet, NamesTheOffendingPair)
 {
   std::vector<Point> points;

@@ -89,8 +89,7 @@ public:
       f.e2[i] = p2[i] - p0[i];
       scale = (std::max)(scale, std::abs(p0[i]) + std::abs(f.e1[i]) + std::abs(f.e2[i]));
     }
-    const Point n = cross(f.e1, f.e2);
-    f.area = 0.5 * std::sqrt(dot(n, n));
+    f.area = 0.5 * length(cross(f.e1, f.e2));
     // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
     position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
     faces_.push_back(f);
@@ -123,7 +122,7 @@ public:
   {
     const Face& f = faces_[face];
     Point n = cross(f.e1, f.e2);
-    const double l = std::sqrt(dot(n, n));
+    const double l = length(n);
     if(l > 0)
       for(double& c : n) c /= l;
     return n;
@@ -354,6 +353,18 @@ private:
     return Point{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
   }
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  // |a|; where its square is not a normal double (a cross product below about 1e-150 or above about
+  // 1e150: a triangle smaller than 1e-75 or larger than 1e75), computed on a divided by its largest
+  // coordinate, since the square underflows to zero or overflows
+  static double length(const Point& a)
+  {
+    const double l2 = dot(a, a);
+    if(l2 >= 0x1.0p-1000 && l2 <= 0x1.0p+1000) return std::sqrt(l2);
+    const double m = (std::max)({std::abs(a[0]), std::abs(a[1]), std::abs(a[2])});
+    if(!(m > 0) || !std::isfinite(m)) return m;
+    const Point b{{a[0] / m, a[1] / m, a[2] / m}};
+    return m * std::sqrt(dot(b, b));
+  }
   static double squared_distance(const Point& a, const Point& b)
   {
     const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];

@@ -39,6 +39,7 @@ template <class Point_3, class Traits, class PointRange>
 Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& samples, double d)
 {
   check_distance(d);
+  check_distance_range(d);
   const std::vector<double> xyz = coordinates_of(samples);
   const Point_hash_grid grid = grid_of(xyz, d);
   const Certificate c = certify_coverage(traits, grid, d);

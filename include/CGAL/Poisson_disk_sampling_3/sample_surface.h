@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,14 @@ struct Size_request
   std::size_t number_of_points = 0; // > 0 when a count is given
 };
 
+/// a count given as a double >= 1, as a size_t: values from the largest size_t up (which rounds up
+/// to 2^64 as a double, where the conversion is undefined) become the largest size_t
+inline std::size_t to_size(double n)
+{
+  const std::size_t largest = (std::numeric_limits<std::size_t>::max)();
+  return n < double(largest) ? std::size_t(n) : largest;
+}
+
 template <class NamedParameters>
 Size_request read_size(const NamedParameters& np)
 {
@@ -63,7 +72,8 @@ Size_request read_size(const NamedParameters& np)
   } else {
     const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_points), 0));
     if(!(n >= 1) || !std::isfinite(n)) throw Invalid_input("number_of_points must be at least 1");
-    s.number_of_points = std::size_t(n);
+    if(n != std::floor(n)) throw Invalid_input("number_of_points must be a whole number");
+    s.number_of_points = to_size(n);
   }
   return s;
 }
@@ -81,7 +91,7 @@ std::size_t read_max_points(const NamedParameters& np)
   const double m = double(CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::maximum_number_of_points), 100000000.));
   if(!(m >= 1) || !std::isfinite(m)) throw Invalid_input("maximum_number_of_points must be at least 1");
-  return std::size_t(m);
+  return to_size(m);
 }
 
 template <class Traits>
@@ -94,12 +104,15 @@ double total_area(const Traits& traits)
   return a;
 }
 
-/// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted
+/// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted. With
+/// `check_expected_count` false, the run does not refuse the distance up front (see
+/// `Dart_throwing_engine::set_expected_count_check()`).
 template <class Traits, class Emit>
 void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points,
-                Sampling_statistics& stats, Emit&& emit)
+                Sampling_statistics& stats, Emit&& emit, bool check_expected_count = true)
 {
   Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
+  engine.set_expected_count_check(check_expected_count);
   const Engine_statistics e = engine.run(emit);
   stats.minimum_distance = d;
   ++stats.number_of_runs;
@@ -130,7 +143,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   Sampling_statistics best_stats;
   for(int run = 0; run < 12; ++run) {
     std::vector<typename Traits::Sample> samples;
-    run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); });
+    run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
+               false);
     const double got = double(samples.size());
     if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
       best.swap(samples);
@@ -192,7 +206,7 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{radius}
 ///     \cgalParamDescription{the disk radius r: two samples are at least 2r apart, and every point of
-///       the surface is within 2r of a sample}
+///       the surface is within 2r of a sample; 2r from 2^-400 to 2^400}
 ///     \cgalParamType{double}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_distance}
@@ -205,7 +219,9 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}
-///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) any request expected to give more points}
+///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) a radius request whose area / (pi r^2)
+///       exceeds it, or a `number_of_points` above it, before any large allocation; the number of samples
+///       accepted never exceeds it either}
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{100 million}
 ///   \cgalParamNEnd
@@ -222,7 +238,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 /// \cgalNamedParamsEnd
 ///
 /// \returns the output iterator past the last sample
-/// \throws Invalid_input for a bad size or a surface with no area. Exceptions are thrown before any
+/// \throws Invalid_input for a bad size (among which a minimum distance outside 2^-400 to 2^400) or a
+///         surface with no area. Exceptions are thrown before any
 ///         sample is written, except `Point_limit_exceeded` raised while sampling (a surface that needs
 ///         more samples than its area predicts), after which `out` may have received some samples.
 /// \throws Point_limit_exceeded when the bound is exceeded

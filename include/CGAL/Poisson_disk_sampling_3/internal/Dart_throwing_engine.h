@@ -146,12 +146,19 @@ public:
   {
     if(!(d_ > 0) || !std::isfinite(d_))
       throw Invalid_input("the minimum distance must be positive and finite");
+    check_distance_range(d_);
     // Below this, rounding decides coverage and the subdivision would not end before max_depth.
     if(!(d_ > 0x1.0p20 * traits_.position_error()))
       throw Invalid_input("the minimum distance " + std::to_string(d_) +
                           " is too small for the precision of the coordinates (rounding error " +
                           std::to_string(traits_.position_error()) + ")");
   }
+
+  /// Whether `run()` first refuses a surface whose area / (pi r^2) exceeds the point bound (by
+  /// default, yes). A `number_of_points` search compares its target with the bound instead: the
+  /// distance it tries for n points has area / (pi r^2) near 1.8 n. The bound on the samples
+  /// accepted holds either way.
+  void set_expected_count_check(bool check) { check_expected_count_ = check; }
 
   /// Throws darts until the surface is covered; calls `output(sample)` for each accepted sample.
   template <class SampleOutput>
@@ -167,7 +174,7 @@ public:
     }
     if(!(total_area > 0) || !std::isfinite(total_area))
       throw Invalid_input("the surface has no part of positive, finite area to sample");
-    check_expected_count(total_area, d_, max_points_);
+    if(check_expected_count_) check_expected_count(total_area, d_, max_points_);
 
     Active_fragment_pool<Item> pool(max_area);
     for(const Fragment& f : roots) {
@@ -450,6 +457,7 @@ private:
   std::uint64_t seed_;
   std::size_t max_points_;
   int max_depth_;
+  bool check_expected_count_ = true;
 };
 
 } // namespace internal
