@@ -160,6 +160,13 @@ TEST(BadInput, RadiusBelowCoordinatePrecision)
   Mesh m;
   m.add_face(m.add_vertex(Point(1e9, 0, 0)), m.add_vertex(Point(1e9 + 1, 0, 0)), m.add_vertex(Point(1e9, 1, 0)));
   EXPECT_THROW(sample(m, PDS::parameters::radius(1e-4).maximum_number_of_points(1000000000)), PDS::Invalid_input);
+  // the message gives the numbers readably, not as 0.000000
+  try {
+    sample(m, PDS::parameters::radius(1e-7).maximum_number_of_points(1000000000));
+    ADD_FAILURE() << "no exception";
+  } catch(const PDS::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("2e-07"), std::string::npos) << e.what();
+  }
 }
 
 TEST(BadInput, NonTriangleFaces)

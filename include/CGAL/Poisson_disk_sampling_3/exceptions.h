@@ -4,6 +4,7 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_EXCEPTIONS_H
 #define CGAL_POISSON_DISK_SAMPLING_3_EXCEPTIONS_H
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -13,7 +14,8 @@ namespace Poisson_disk_sampling_3 {
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Thrown for input that cannot be sampled: an empty surface, a face that is not a triangle,
 /// NaN or infinite coordinates, a radius, minimum distance or point count that is not positive and
-/// finite, or contradictory size parameters. The message says which.
+/// finite, a minimum distance outside 2^-400 to 2^400 or below the coordinates' rounding error, or
+/// contradictory size parameters. The message says which.
 class Invalid_input : public std::invalid_argument
 {
 public:
@@ -23,8 +25,9 @@ public:
 
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Thrown before any large allocation when a request would produce more points than the bound
-/// `maximum_number_of_points` (default 100 million): the expected count area / (pi r^2) is checked
-/// first, and the actual count while sampling (thin or scattered surfaces can exceed the estimate).
+/// `maximum_number_of_points` (default 100 million): the estimate area / (pi r^2) of a radius
+/// request, or the target of a `number_of_points` request, is checked first, and the actual count
+/// while sampling (thin or scattered surfaces can exceed the estimate).
 class Point_limit_exceeded : public std::length_error
 {
 public:
@@ -41,6 +44,19 @@ public:
   /// constructs the exception with a message
   explicit Target_not_reached(const std::string& what) : std::runtime_error("Poisson_disk_sampling_3: " + what) {}
 };
+
+namespace internal {
+
+/// a number for a message, with six significant digits at any magnitude (`std::to_string` gives
+/// "0.000000" for 1e-7)
+inline std::string number_text(double x)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.6g", x);
+  return text;
+}
+
+} // namespace internal
 
 } // namespace Poisson_disk_sampling_3
 } // namespace CGAL

@@ -149,9 +149,9 @@ public:
     check_distance_range(d_);
     // Below this, rounding decides coverage and the subdivision would not end before max_depth.
     if(!(d_ > 0x1.0p20 * traits_.position_error()))
-      throw Invalid_input("the minimum distance " + std::to_string(d_) +
+      throw Invalid_input("the minimum distance " + number_text(d_) +
                           " is too small for the precision of the coordinates (rounding error " +
-                          std::to_string(traits_.position_error()) + ")");
+                          number_text(traits_.position_error()) + ")");
   }
 
   /// Whether `run()` first refuses a surface whose area / (pi r^2) exceeds the point bound (by

@@ -9,7 +9,6 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/enum.h>
 
-#include <cstdio>
 #include <string>
 
 namespace CGAL {
@@ -28,13 +27,10 @@ constexpr double largest_minimum_distance = 0x1.0p+400;
 /// throws `Invalid_input` unless `d` is in [smallest_minimum_distance, largest_minimum_distance]
 inline void check_distance_range(double d)
 {
-  if(!(d >= smallest_minimum_distance && d <= largest_minimum_distance)) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.6g", d);
-    throw Invalid_input(std::string("the minimum distance ") + text +
+  if(!(d >= smallest_minimum_distance && d <= largest_minimum_distance))
+    throw Invalid_input("the minimum distance " + number_text(d) +
                         " is outside the range 2^-400 to 2^400 (about 3.9e-121 to 2.6e120) that the package "
                         "handles; scale the input");
-  }
 }
 
 /// Exact sign of |p - q|^2 - d^2 for points given by double coordinates and a double distance d.
