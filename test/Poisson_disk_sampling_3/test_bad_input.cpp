@@ -117,6 +117,13 @@ TEST(BadInput, CountsAndBoundsAtTheirExtremes)
   EXPECT_NEAR(double(out.size()), 600., 6.);
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(1001).maximum_number_of_points(1000)),
                PDS::Point_limit_exceeded);
+  // a target at the bound: a run of the search overshoots it, and the message says so
+  try {
+    sample(m, PDS::parameters::number_of_points(1000).maximum_number_of_points(1000));
+    ADD_FAILURE() << "a run of the search was expected to exceed the bound";
+  } catch(const PDS::Point_limit_exceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("number_of_points (1000)"), std::string::npos) << e.what();
+  }
   out.clear();
   const std::size_t largest = std::numeric_limits<std::size_t>::max();
   PDS::sample_triangle_mesh(m, std::back_inserter(out), PDS::parameters::radius(0.05).maximum_number_of_points(largest));

@@ -143,8 +143,14 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   Sampling_statistics best_stats;
   for(int run = 0; run < 12; ++run) {
     std::vector<typename Traits::Sample> samples;
-    run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
-               false);
+    try {
+      run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
+                 false);
+    } catch(const Point_limit_exceeded&) {
+      throw Point_limit_exceeded("a run of the search for number_of_points (" + std::to_string(n) +
+                                 ") exceeded maximum_number_of_points (" + std::to_string(max_points) +
+                                 "); the runs land within 1% of the target or more: allow a few percent more");
+    }
     const double got = double(samples.size());
     if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
       best.swap(samples);
