@@ -122,7 +122,7 @@ TEST(BadInput, CountsAndBoundsAtTheirExtremes)
     sample(m, PDS::parameters::number_of_points(1000).maximum_number_of_points(1000));
     ADD_FAILURE() << "a run of the search was expected to exceed the bound";
   } catch(const PDS::Point_limit_exceeded& e) {
-    EXPECT_NE(std::string(e.what()).find("number_of_points (1000)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("search for number_of_points (1000)"), std::string::npos) << e.what();
   }
   out.clear();
   const std::size_t largest = std::numeric_limits<std::size_t>::max();
