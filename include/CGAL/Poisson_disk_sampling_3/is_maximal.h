@@ -40,6 +40,7 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 {
   check_distance(d);
   check_distance_range(d);
+  check_distance_precision(d, traits.position_error());
   const std::vector<double> xyz = coordinates_of(samples);
   const Point_hash_grid grid = grid_of(xyz, d);
   const Certificate c = certify_coverage(traits, grid, d);

@@ -4,11 +4,13 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_COVERAGE_CERTIFIER_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_COVERAGE_CERTIFIER_H
 
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
 #include <vector>
 
@@ -49,6 +51,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   traits.initial_fragments(std::back_inserter(roots));
   double total_area = 0;
   for(const Fragment& f : roots) total_area += traits.area(f);
+  if(!(total_area > 0) || !std::isfinite(total_area))
+    throw Invalid_input("the surface has no part of positive, finite area to certify");
   const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
   const double defer_area = d * d * 0x1.0p-24;
 

@@ -147,11 +147,7 @@ public:
     if(!(d_ > 0) || !std::isfinite(d_))
       throw Invalid_input("the minimum distance must be positive and finite");
     check_distance_range(d_);
-    // Below this, rounding decides coverage and the subdivision would not end before max_depth.
-    if(!(d_ > 0x1.0p20 * traits_.position_error()))
-      throw Invalid_input("the minimum distance " + number_text(d_) +
-                          " is too small for the precision of the coordinates (rounding error " +
-                          number_text(traits_.position_error()) + ")");
+    check_distance_precision(d_, traits_.position_error());
   }
 
   /// Whether `run()` first refuses a surface whose area / (pi r^2) exceeds the point bound (by

@@ -33,6 +33,17 @@ inline void check_distance_range(double d)
                         "handles; scale the input");
 }
 
+/// throws `Invalid_input` unless `d` exceeds 2^20 times `position_error`, a model's bound on the
+/// rounding of its points: below, rounding decides coverage, the subdivision would not end before
+/// its depth floor, and the certificate would split every fragment to its own floor
+inline void check_distance_precision(double d, double position_error)
+{
+  if(!(d > 0x1.0p20 * position_error))
+    throw Invalid_input("the minimum distance " + number_text(d) +
+                        " is too small for the precision of the coordinates (rounding error " +
+                        number_text(position_error) + ")");
+}
+
 /// Exact sign of |p - q|^2 - d^2 for points given by double coordinates and a double distance d.
 /// The double evaluation decides unless it is within a relative 1e-10 of the threshold (its error is
 /// below 1e-15 relative while d^2 is a normal double far from overflow, which the first test makes
