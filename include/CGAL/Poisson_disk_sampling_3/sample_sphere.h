@@ -52,7 +52,7 @@ PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIt
 {
   const Sphere_fragment_traits_3 traits = internal::sphere_traits(sphere);
   internal::sample_request(traits, np, [&](const Sphere_fragment_traits_3::Sample& s) {
-    *out++ = typename K::Point_3(s.point[0], s.point[1], s.point[2]);
+    *out++ = internal::output_point<typename K::Point_3>(s.point);
   });
   return out;
 }

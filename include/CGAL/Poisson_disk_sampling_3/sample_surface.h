@@ -8,11 +8,15 @@
 #include <CGAL/Poisson_disk_sampling_3/parameters.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Dart_throwing_engine.h>
 
+#include <CGAL/Kernel_traits.h>
+
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -42,6 +46,19 @@ struct Size_request
   double minimum_distance = 0; // > 0 when the distance is given
   std::size_t number_of_points = 0; // > 0 when a count is given
 };
+
+/// A sample's point as the caller's point type. The samples are computed and checked in double: a
+/// point type with narrower coordinates (a kernel on `float`) would round them, and two samples
+/// could end up closer than the minimum distance, so it is refused when the program is compiled.
+template <class Point_3>
+Point_3 output_point(const std::array<double, 3>& p)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::FT FT;
+  static_assert(!(std::is_floating_point<FT>::value && sizeof(FT) < sizeof(double)),
+                "Poisson_disk_sampling_3: the samples are doubles; a point type on float would round them and "
+                "break the minimum distance: use a kernel on double or exact numbers");
+  return Point_3(p[0], p[1], p[2]);
+}
 
 /// a count given as a double >= 1, as a size_t: values from the largest size_t up (which rounds up
 /// to 2^64 as a double, where the conversion is undefined) become the largest size_t

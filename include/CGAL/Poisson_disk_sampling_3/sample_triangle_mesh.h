@@ -109,7 +109,7 @@ Triangle_sample<GeomTraits, Face> located_sample(const Triangle_fragment_traits_
   const auto n = traits.triangle_normal(s.face);
   const auto w = traits.barycentric_coordinates(s);
   return Triangle_sample<GeomTraits, Face>{
-      typename GeomTraits::Point_3(s.point[0], s.point[1], s.point[2]), face_of(s.face),
+      internal::output_point<typename GeomTraits::Point_3>(s.point), face_of(s.face),
       std::array<FT, 3>{{FT(w[0]), FT(w[1]), FT(w[2])}}, typename GeomTraits::Vector_3(n[0], n[1], n[2])};
 }
 
@@ -157,7 +157,7 @@ PointOutputIterator sample_triangle_mesh(const TriangleMesh& tm, PointOutputIter
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
   const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
   internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
-    *out++ = typename GT::Point_3(s.point[0], s.point[1], s.point[2]);
+    *out++ = internal::output_point<typename GT::Point_3>(s.point);
   });
   return out;
 }
@@ -206,7 +206,7 @@ PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonR
                                                              Default_kernel>::type GT;
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
   internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
-    *out++ = typename GT::Point_3(s.point[0], s.point[1], s.point[2]);
+    *out++ = internal::output_point<typename GT::Point_3>(s.point);
   });
   return out;
 }
