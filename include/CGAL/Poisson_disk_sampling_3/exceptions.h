@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_EXCEPTIONS_H
 
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -54,6 +55,14 @@ inline std::string number_text(double x)
   char text[32];
   std::snprintf(text, sizeof(text), "%.6g", x);
   return text;
+}
+
+/// throws `Invalid_input` unless the total area of a surface is positive and finite; `purpose` ends
+/// the message ("sample", "certify")
+inline void check_surface_area(double area, const char* purpose)
+{
+  if(!(area > 0) || !(area <= std::numeric_limits<double>::max()))
+    throw Invalid_input(std::string("the surface has no part of positive, finite area to ") + purpose);
 }
 
 } // namespace internal

@@ -152,8 +152,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     throw Point_limit_exceeded("number_of_points (" + std::to_string(n) +
                                ") exceeds maximum_number_of_points (" + std::to_string(max_points) + ")");
   const double area = total_area(traits);
-  if(!(area > 0) || !std::isfinite(area))
-    throw Invalid_input("the surface has no part of positive, finite area to sample");
+  check_surface_area(area, "sample");
   const double tolerance = (std::max)(1., 0.01 * double(n));
   double d = std::sqrt(0.6965 * area / double(n));
   double slope = -2, last_d = 0, last_n = 0;

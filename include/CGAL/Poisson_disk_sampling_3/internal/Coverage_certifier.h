@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <iterator>
 #include <vector>
 
@@ -51,8 +50,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   traits.initial_fragments(std::back_inserter(roots));
   double total_area = 0;
   for(const Fragment& f : roots) total_area += traits.area(f);
-  if(!(total_area > 0) || !std::isfinite(total_area))
-    throw Invalid_input("the surface has no part of positive, finite area to certify");
+  check_surface_area(total_area, "certify");
   const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
   const double defer_area = d * d * 0x1.0p-24;
 

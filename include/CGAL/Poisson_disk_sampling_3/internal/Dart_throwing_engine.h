@@ -168,8 +168,7 @@ public:
       total_area += a;
       if(a > max_area) max_area = a;
     }
-    if(!(total_area > 0) || !std::isfinite(total_area))
-      throw Invalid_input("the surface has no part of positive, finite area to sample");
+    check_surface_area(total_area, "sample");
     if(check_expected_count_) check_expected_count(total_area, d_, max_points_);
 
     Active_fragment_pool<Item> pool(max_area);
