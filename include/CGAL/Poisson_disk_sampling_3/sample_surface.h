@@ -171,7 +171,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     } catch(const Point_limit_exceeded&) {
       throw Point_limit_exceeded("a run of the search for number_of_points (" + std::to_string(n) +
                                  ") exceeded maximum_number_of_points (" + std::to_string(max_points) +
-                                 "); the runs land within 1% of the target or more: allow a few percent more");
+                                 "); a run can land 1% or more above the target: allow a few percent more");
     }
     const double got = double(samples.size());
     if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
