@@ -249,7 +249,7 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
 }
 
 // The triangle model without its optional union test and refine(): the operations the concept
-// requires and the optional level() and prefetch(), so the engine falls back to single-ball coverage.
+// requires and the optional root pieces for a distance, level() and prefetch(), so the engine falls back to single-ball coverage.
 // What the union test saves is measured against it.
 class Without_union_test
 {
@@ -261,6 +261,7 @@ public:
 
   explicit Without_union_test(const Base& base) : base_(base) {}
   template <class Out> Out initial_fragments(Out out) const { return base_.initial_fragments(out); }
+  template <class Out> Out initial_fragments(Out out, double d) const { return base_.initial_fragments(out, d); }
   double area(const Fragment& f) const { return base_.area(f); }
   template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const { return base_.random_sample(f, rng); }
   const Point& point(const Sample& s) const { return base_.point(s); }

@@ -107,6 +107,34 @@ TEST(BadInput, BoundHoldsWhileSampling)
   EXPECT_EQ(out.size(), 1000u);
 }
 
+// Long thin faces are cut into pieces about D long (Triangle_fragment_traits_3); the pieces count
+// against the bound too, before any is stored. A disk of 2000 slivers around its centre, 1 long and
+// 0.003 wide, at D = 0.01: about 22,000 points, but 127 pieces a face.
+TEST(BadInput, PiecesOfThinFacesCountAgainstTheBound)
+{
+  std::vector<Point> p{Point(0, 0, 0)};
+  std::vector<std::array<std::size_t, 3>> t;
+  const std::size_t n = 2000;
+  for(std::size_t i = 0; i < n; ++i) {
+    const double a = 6.283185307179586 * double(i) / double(n);
+    p.push_back(Point(std::cos(a), std::sin(a), 0));
+    t.push_back({0, 1 + i, 1 + (i + 1) % n});
+  }
+  std::vector<Point> out;
+  try {
+    PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                             PDS::parameters::minimum_distance(0.01).maximum_number_of_points(100000));
+    ADD_FAILURE() << "not refused";
+  } catch(const PDS::Point_limit_exceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("pieces"), std::string::npos) << e.what();
+    EXPECT_TRUE(out.empty()) << "refused after sampling";
+  }
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                           PDS::parameters::minimum_distance(0.01).maximum_number_of_points(300000));
+  EXPECT_GT(out.size(), 15000u);
+  EXPECT_LT(out.size(), 30000u);
+}
+
 // A count whose bound is not reached works even where area / (pi r^2) at the distance tried would
 // exceed the bound; the largest bounds convert without overflow; a count is a whole number.
 TEST(BadInput, CountsAndBoundsAtTheirExtremes)

@@ -484,14 +484,26 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
     Traits traits;
     const double offset = trial % 2 ? 0. : 500.;
     auto rnd = [&]() { return Traits::Point{{offset + rng.uniform(), offset + rng.uniform(), offset + 0.3 * rng.uniform()}}; };
-    traits.add_triangle(rnd(), rnd(), rnd());
+    // every other trial, a long thin triangle (a needle or a cap) cut into pieces for a distance
+    const bool thin = trial % 4 >= 2;
+    auto rnd_thin = [&]() {
+      return Traits::Point{{offset + 4 * rng.uniform(), offset + 0.05 * rng.uniform(), offset + 0.01 * rng.uniform()}};
+    };
+    if(thin) traits.add_triangle(rnd_thin(), rnd_thin(), rnd_thin());
+    else traits.add_triangle(rnd(), rnd(), rnd());
     std::vector<Fragment> roots;
-    traits.initial_fragments(std::back_inserter(roots));
+    if(thin) traits.initial_fragments(std::back_inserter(roots), 0.01 + 0.3 * rng.uniform());
+    else traits.initial_fragments(std::back_inserter(roots));
     if(roots.empty()) continue;
-    const Fragment f = random_descendant(traits, roots.front(), int(rng.uniform_index(8)), rng);
-    // balls around f's centroid, of a radius of the order of f's size
+    const Fragment f =
+        random_descendant(traits, roots[rng.uniform_index(roots.size())], int(rng.uniform_index(8)), rng);
+    // balls around f's centroid, of a radius of the order of f's size (from a few of its points)
     const Traits::Point g = traits.reference_point(f);
-    const double size = std::ldexp(1., -int(f.level)); // f's legs are at most this times the root's
+    double size = 0;
+    for(int i = 0; i < 8; ++i) {
+      const Traits::Point q = traits.random_sample(f, rng)->point;
+      size = std::max(size, 2 * std::hypot(q[0] - g[0], q[1] - g[1], q[2] - g[2]));
+    }
     const double radius = size * (0.2 + 0.8 * rng.uniform());
     std::vector<std::array<double, 3>> near, around;
     const int k = int(rng.uniform_index(7));
@@ -502,11 +514,101 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
       if(rng.uniform() < 0.6) near.push_back(c);
     }
     auto same = [](const Fragment& a, const Fragment& b) {
-      return a.u == b.u && a.v == b.v && a.face == b.face && a.level == b.level && a.inverted == b.inverted;
+      return a.u == b.u && a.v == b.v && a.face == b.face && a.level == b.level && a.inverted == b.inverted &&
+             a.piece == b.piece;
     };
     expect_refine_agrees(traits, f, near, around, radius, same, counts, trial);
   }
   expect_every_branch_taken(counts);
+}
+
+// The pieces of a long thin triangle (for a minimum distance D) tile it: their areas add up to the
+// triangle's, and every point of the triangle lies in exactly one piece (or on the boundary between
+// pieces). They are few (fewer than 2 L / max(D, width) for a face L long), no longer than four
+// times max(D, shortest edge), nor than 4 L 2^-depth (the depth the engine's floor counts). Needles
+// and caps (corners nearly in line), of aspect ratios up to 10^4, with D from L down to L / 3000.
+TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  typedef Traits::Fragment Fragment;
+  typedef Traits::Point P;
+  Random rng(37);
+  auto sub = [](const P& a, const P& b) { return P{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
+  auto cross = [](const P& a, const P& b) {
+    return P{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+  };
+  auto dot = [](const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto norm = [&](const P& a) { return std::sqrt(dot(a, a)); };
+  int cut = 0, caps_cut = 0;
+  for(int trial = 0; trial < 400; ++trial) {
+    P q[3];
+    const double thinness = std::pow(10., -4 * rng.uniform());
+    const bool cap = trial % 2 == 1;
+    for(P& c : q) {
+      // a cap: corners spread along a line; a needle: two corners close together, one far
+      const double x = cap ? rng.uniform() : (&c == &q[0] ? 1. : 0.05 * rng.uniform());
+      c = P{{3 + 10 * x, 2 + thinness * rng.uniform(), -1 + thinness * rng.uniform()}};
+    }
+    Traits traits;
+    traits.add_triangle(q[0], q[1], q[2]);
+    const double area = traits.triangle_area(0);
+    if(!(area > 0)) continue;
+    const double edges[3] = {norm(sub(q[1], q[0])), norm(sub(q[2], q[1])), norm(sub(q[0], q[2]))};
+    const double L = std::max({edges[0], edges[1], edges[2]}), shortest = std::min({edges[0], edges[1], edges[2]});
+    const double width = 2 * area / L;
+    const double d = L * std::pow(10., -3.5 * rng.uniform());
+    std::vector<Fragment> pieces;
+    traits.initial_fragments(std::back_inserter(pieces), d);
+    ASSERT_FALSE(pieces.empty());
+    EXPECT_LE(double(pieces.size()), 2 * L / std::max(d, width) + 1) << "trial " << trial;
+    if(pieces.size() > 1) {
+      ++cut;
+      caps_cut += cap;
+    }
+
+    double total = 0;
+    std::vector<std::array<P, 3>> corners;
+    for(const Fragment& f : pieces) {
+      EXPECT_EQ(f.level, 0u);
+      EXPECT_LE(traits.level(f), 12);
+      EXPECT_GT(traits.area(f), 0);
+      total += traits.area(f);
+      const double h = f.inverted ? -1. : 1.;
+      corners.push_back({{point_at(traits, f, f.u, f.v), point_at(traits, f, f.u + h, f.v),
+                          point_at(traits, f, f.u, f.v + h)}});
+      if(pieces.size() > 1) {
+        const auto& c = corners.back();
+        const double diameter = std::max({norm(sub(c[1], c[0])), norm(sub(c[2], c[1])), norm(sub(c[0], c[2]))});
+        EXPECT_LE(diameter, 4 * std::max(d, shortest)) << "trial " << trial;
+        // the depth the engine's floor counts is that of a fragment of the face this long
+        EXPECT_LE(diameter, 4 * std::ldexp(L, -traits.level(f))) << "trial " << trial;
+      }
+    }
+    EXPECT_NEAR(total, area, 1e-12 * area) << "trial " << trial;
+
+    // random points of the triangle, located in the pieces by barycentric coordinates (relative
+    // tolerance 1e-7: a point that close to a piece's edge may be in either piece)
+    const P normal = cross(sub(q[1], q[0]), sub(q[2], q[0]));
+    for(int i = 0; i < 200; ++i) {
+      double a = rng.uniform(), b = rng.uniform();
+      if(a + b > 1) a = 1 - a, b = 1 - b;
+      P x;
+      for(int j = 0; j < 3; ++j) x[j] = q[0][j] + a * (q[1][j] - q[0][j]) + b * (q[2][j] - q[0][j]);
+      int inside = 0, near_edge = 0;
+      for(const auto& c : corners) {
+        const double whole = dot(cross(sub(c[1], c[0]), sub(c[2], c[0])), normal);
+        double lowest = 1;
+        for(int j = 0; j < 3; ++j)
+          lowest = std::min(lowest, dot(cross(sub(c[(j + 1) % 3], x), sub(c[(j + 2) % 3], x)), normal) / whole);
+        inside += lowest > 1e-7;
+        near_edge += std::abs(lowest) <= 1e-7;
+      }
+      ASSERT_LE(inside, 1) << "trial " << trial << ": pieces overlap";
+      ASSERT_GE(inside + near_edge, 1) << "trial " << trial << ": a point of the face is in no piece";
+    }
+  }
+  EXPECT_GT(cut, 200); // most faces are cut, caps included
+  EXPECT_GT(caps_cut, 100);
 }
 
 // grid_cell() is the floor of the scaled coordinate, on both sides of zero and at integers.

@@ -194,6 +194,112 @@ TEST(MeshSampling, LocationsRebuildTheSamples)
   }
 }
 
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+// a cylinder of radius 1 and height h, with `segments` around and `rings` along: two triangles a cell
+Soup cylinder(std::size_t segments, std::size_t rings, double h)
+{
+  Soup s;
+  for(std::size_t r = 0; r <= rings; ++r)
+    for(std::size_t i = 0; i < segments; ++i) {
+      const double a = 6.283185307179586 * double(i) / double(segments);
+      s.points.push_back(Point(std::cos(a), std::sin(a), h * double(r) / double(rings)));
+    }
+  for(std::size_t r = 0; r < rings; ++r)
+    for(std::size_t i = 0; i < segments; ++i) {
+      const std::size_t a = r * segments + i, b = r * segments + (i + 1) % segments;
+      s.triangles.push_back({a, b, b + segments});
+      s.triangles.push_back({a, b + segments, a + segments});
+    }
+  return s;
+}
+
+// the rectangle [0, w] x [0, h] in the plane z = 0: cut by its centre into four triangles (two caps,
+// nearly flat, and two needles), or into a grid of squares of side h / 4, two triangles each
+Soup strip(double w, double h, bool by_centre)
+{
+  Soup s;
+  if(by_centre) {
+    s.points = {Point(0, 0, 0), Point(w, 0, 0), Point(w, h, 0), Point(0, h, 0), Point(w / 2, h / 2, 0)};
+    s.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+    return s;
+  }
+  const std::size_t nx = std::size_t(std::lround(4 * w / h)), ny = 4;
+  for(std::size_t j = 0; j <= ny; ++j)
+    for(std::size_t i = 0; i <= nx; ++i) s.points.push_back(Point(w * double(i) / double(nx), h * double(j) / double(ny), 0));
+  for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t i = 0; i < nx; ++i) {
+      const std::size_t a = j * (nx + 1) + i;
+      s.triangles.push_back({a, a + 1, a + nx + 2});
+      s.triangles.push_back({a, a + nx + 2, a + nx + 1});
+    }
+  return s;
+}
+
+// The triangle model without the pieces it cuts long thin faces into: its maximality certificate
+// splits whole faces only, an independent check of the pieces.
+class Whole_faces_only
+{
+public:
+  typedef PDS::Triangle_fragment_traits_3 Base;
+  typedef Base::Fragment Fragment;
+  typedef Base::Sample Sample;
+  typedef Base::Point P;
+  explicit Whole_faces_only(const Base& base) : base_(base) {}
+  template <class Out> Out initial_fragments(Out out) const { return base_.initial_fragments(out); }
+  double area(const Fragment& f) const { return base_.area(f); }
+  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const { return base_.random_sample(f, rng); }
+  const P& point(const Sample& s) const { return base_.point(s); }
+  P reference_point(const Fragment& f) const { return base_.reference_point(f); }
+  bool is_covered(const Fragment& f, const P& c, double r) const { return base_.is_covered(f, c, r); }
+  template <class Out> Out split(const Fragment& f, Out out) const { return base_.split(f, out); }
+  double position_error() const { return base_.position_error(); }
+
+private:
+  const Base& base_;
+};
+
+// Long thin triangles cost about what well-shaped ones do: a cylinder of 64 triangles as long as it
+// is (10) and 0.2 wide, against the same surface in rings of well-shaped triangles; a thin rectangle
+// cut into two caps (largest angle 175 degrees) and two needles, against a grid. Whole faces would
+// take hundreds of darts a point (544 on a cylinder 100 long at D = 0.1). Each output is a maximal
+// Poisson-disk set, and maximal also by a certificate that splits whole faces only.
+TEST(MeshSampling, LongThinTrianglesCostAsMuchAsWellShapedOnes)
+{
+  struct Case { Soup thin, reference; double d; };
+  const Case cases[] = {{cylinder(32, 1, 10), cylinder(32, 51, 10), 0.1},
+                        {strip(10, 0.4, true), strip(10, 0.4, false), 0.05}};
+  for(const Case& c : cases) {
+    double darts_per_point[2], peak_per_point[2];
+    for(int i = 0; i < 2; ++i) {
+      const Soup& soup = i == 0 ? c.thin : c.reference;
+      std::vector<Point> points;
+      PDS::Sampling_statistics stats;
+      PDS::sample_polygon_soup(soup.points, soup.triangles, std::back_inserter(points),
+                               PDS::parameters::minimum_distance(c.d).statistics(std::ref(stats)));
+      ASSERT_GT(points.size(), 100u);
+      darts_per_point[i] = double(stats.darts) / double(points.size());
+      peak_per_point[i] = double(stats.peak_active_fragments) / double(points.size());
+      EXPECT_TRUE(PDS::is_poisson_disk_set(points, c.d));
+      EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(soup.points, soup.triangles, points, c.d));
+      if(i == 0) {
+        const PDS::Triangle_fragment_traits_3 traits = PDS::internal::triangles_of_soup(soup.points, soup.triangles);
+        PDS::internal::Point_hash_grid grid(2 * c.d * (1 + 0x1.0p-10));
+        std::vector<std::array<double, 3>> raw;
+        for(const Point& p : points) raw.push_back({{p.x(), p.y(), p.z()}});
+        for(const auto& p : raw) grid.insert(p.data());
+        EXPECT_TRUE(PDS::internal::certify_coverage(Whole_faces_only(traits), grid, c.d).maximal);
+      }
+    }
+    EXPECT_LT(darts_per_point[0], 1.5 * darts_per_point[1]);
+    EXPECT_LT(peak_per_point[0], 2 * peak_per_point[1]);
+  }
+}
+
 // two triangles sharing only a vertex, three sharing one edge (non-manifold), a zero-area triangle
 TEST(MeshSampling, MessySoupIsCoveredAndDegenerateFacesSkipped)
 {

@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/assertions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
@@ -26,12 +27,30 @@ namespace Poisson_disk_sampling_3 {
 ///
 /// Triangles as surface fragments (paper Section 4). The surface is a set of triangles added with
 /// `add_triangle()`; the fragments are the sub-triangles of the regular 4-to-1 midpoint subdivision
-/// of each one. A fragment is stored as its face, its subdivision level and one corner in the face's
-/// parameter space (u, v), where the face is V0 + u (V1 - V0) + v (V2 - V0): corners and samples keep
-/// exact dyadic parameters. Each triangle is rotated to start at its lexicographically smallest corner,
+/// of a root piece. A root piece is a whole face, or, for a long thin face and a given minimum
+/// distance D, one of the pieces `initial_fragments(out, D)` cuts it into (see "Long thin triangles"
+/// below). A fragment is stored as its face, its piece, its subdivision level and one corner in the
+/// piece's parameter space; the face is V0 + u (V1 - V0) + v (V2 - V0), and pieces have corners at
+/// dyadic (u, v), so that the corners of fragments have exact dyadic parameters (see `level()`). Each triangle is rotated to start at its lexicographically smallest corner,
 /// so that the samples depend on the geometry only, not on which corner a mesh data structure lists
 /// first (`Surface_mesh` and `Polyhedron_3` give the same points); `barycentric_coordinates()` maps
 /// back to the order in which the corners were given.
+///
+/// Long thin triangles: subdivision keeps a triangle's shape, so a face L long and w wide would be cut
+/// into slivers as thin as the face, about (L / D)^2 of them around a face narrower than D. With a
+/// minimum distance D, `initial_fragments(out, D)` therefore cuts such faces first, with dyadic
+/// parameters so that the pieces tile the face exactly:
+/// - a face whose largest angle is below 120 degrees (a needle: one short edge, two long ones) into
+///   2^k rows parallel to its shortest edge, each row a trapezoid cut into two triangles, the last
+///   row (at the far corner) a triangle: 2^(k+1) - 1 pieces;
+/// - a face with an angle of 120 degrees or more (a cap, its corners nearly in line) first into two
+///   needles, by a segment from the obtuse corner to a multiple of 2^-k of the opposite edge nearest
+///   the foot of the altitude, then each needle into rows.
+///
+/// With w the face's shortest edge (a needle) or its height over its longest edge (a cap), L its
+/// longest edge, and 2^k the largest power of two up to L / max(D, w) (at most 2^12), the rows are
+/// one to two times max(D, w) long (up to four times in a cap). A face with L < 4 max(D, w) stays whole: cutting it would save
+/// fewer darts than the pieces cost (lion.off at a million points is as fast either way).
 ///
 /// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
 /// `sample_surface()` to sample triangles from another source.
@@ -44,14 +63,15 @@ public:
   /// a point, as the engine computes with it
   typedef std::array<double, 3> Point;
 
-  /// a sub-triangle of one face
+  /// a sub-triangle of one root piece of a face
   struct Fragment
   {
-    double u;             ///< parameter of the corner at the right angle in parameter space
-    double v;             ///< parameter of the corner at the right angle in parameter space
-    std::uint32_t face;   ///< index of the face, in the order of `add_triangle()`
-    std::uint8_t level;   ///< subdivision level: the legs in parameter space are 2^-level long
-    bool inverted;        ///< the legs point towards -u and -v instead of +u and +v
+    double u;                      ///< the corner at the right angle in the piece's parameter space
+    double v;                      ///< (for a whole face, the face's (u, v))
+    std::uint32_t face;            ///< index of the face, in the order of `add_triangle()`
+    std::uint32_t level : 6;       ///< subdivision level in the piece: legs 2^-level long in its parameter space
+    std::uint32_t inverted : 1;    ///< the legs point towards -u and -v instead of +u and +v
+    std::uint32_t piece : 25;      ///< which root piece of the face; 0 for the whole face
   };
 
   /// a sample: its point and where it lies
@@ -90,6 +110,7 @@ public:
       scale = (std::max)(scale, std::abs(p0[i]) + std::abs(f.e1[i]) + std::abs(f.e2[i]));
     }
     f.area = 0.5 * length(cross(f.e1, f.e2));
+    classify(f);
     // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
     position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
     faces_.push_back(f);
@@ -134,17 +155,50 @@ public:
   /// a bound on the distance between a computed point of a triangle and the exact one
   double position_error() const { return position_error_; }
 
-  /// writes one fragment per triangle of positive area
+  /// writes one fragment per triangle of positive area: the whole triangle
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out) const
   {
     for(std::uint32_t i = 0; i < faces_.size(); ++i)
-      if(faces_[i].area > 0) *out++ = Fragment{0., 0., i, 0, false};
+      if(faces_[i].area > 0) *out++ = make_fragment(0., 0., i, 0, false, 0);
+    return out;
+  }
+
+  /// Optional operation of `SurfaceFragmentTraits_3`: the root pieces for the minimum distance
+  /// `minimum_distance`, which tile the triangles of positive area: whole triangles, and the pieces of
+  /// the long thin ones (see the class description). The engine and the maximality certificate use it.
+  template <class OutputIterator>
+  OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const
+  {
+    for(std::uint32_t i = 0; i < faces_.size(); ++i) {
+      const Face& f = faces_[i];
+      if(!(f.area > 0)) continue;
+      const int k = cut_level(f, minimum_distance);
+      if(k == 0) {
+        *out++ = make_fragment(0., 0., i, 0, false, 0);
+        continue;
+      }
+      for(int kind = f.cap ? 2 : 1; kind <= (f.cap ? 3 : 1); ++kind) {
+        double P[2], Q[2], R[2];
+        const int rows_log2 = needle(f, kind, k, P, Q, R);
+        if(rows_log2 < 0) continue; // the cap's split point is a corner: no second needle
+        const std::uint32_t rows = std::uint32_t(1) << rows_log2;
+        for(std::uint32_t j = 0; j < rows; ++j) {
+          *out++ = make_fragment(0., 0., i, 0, false, piece_code(kind, k, 0, j));
+          if(j + 1 < rows) *out++ = make_fragment(0., 0., i, 0, false, piece_code(kind, k, 1, j)); // the last row is one triangle
+        }
+      }
+    }
     return out;
   }
 
   /// area of a fragment: a quarter of its parent's
-  double area(const Fragment& f) const { return faces_[f.face].area * internal::power_of_half(2 * std::size_t(f.level)); }
+  double area(const Fragment& f) const
+  {
+    const Face& face = faces_[f.face];
+    const double a = face.area * internal::power_of_half(2 * std::size_t(f.level));
+    return f.piece == 0 ? a : a * piece_share(face, f.piece);
+  }
 
   /// a point uniformly distributed on the fragment, never refused
   template <class RandomGenerator>
@@ -153,10 +207,12 @@ public:
     double a = rng.uniform(), b = rng.uniform();
     if(a + b > 1) { a = 1 - a; b = 1 - b; }
     const double h = leg(f);
+    std::array<double, 2> uv{{f.u + h * a, f.v + h * b}};
+    if(f.piece != 0) uv = frame(faces_[f.face], f.piece)(uv[0], uv[1]);
     Sample s;
     s.face = f.face;
-    s.u = f.u + h * a;
-    s.v = f.v + h * b;
+    s.u = uv[0];
+    s.v = uv[1];
     s.point = at(faces_[f.face], s.u, s.v);
     return s;
   }
@@ -168,7 +224,9 @@ public:
   Point reference_point(const Fragment& f) const
   {
     const double t = leg(f) / 3;
-    return at(faces_[f.face], f.u + t, f.v + t);
+    std::array<double, 2> uv{{f.u + t, f.v + t}};
+    if(f.piece != 0) uv = frame(faces_[f.face], f.piece)(uv[0], uv[1]);
+    return at(faces_[f.face], uv[0], uv[1]);
   }
 
   /// true only if the three corners are within `radius` of `center` by more than their rounding error,
@@ -194,8 +252,14 @@ public:
     return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * position_error_);
   }
 
-  /// Optional operation of `SurfaceFragmentTraits_3`: the number of splits from the fragment's root
-  int level(const Fragment& f) const { return f.level; }
+  /// Optional operation of `SurfaceFragmentTraits_3`: the depth of the fragment, counted from its whole
+  /// face: its level in its piece, plus k for a piece (a row is about 2^-k of the face's length; 0
+  /// for a whole face). The parameters of a fragment's corners have at most this many bits plus those
+  /// of a cap's rows (at most 12): exact in double precision (52 bits) down to the engine's floor,
+  /// depth 40. Below it, in the maximality certificate's last levels, a parameter rounds by at most
+  /// 2^-53, which moves a corner by less than a quarter of `position_error()`, within the margin of
+  /// `is_covered()`.
+  int level(const Fragment& f) const { return int(f.level) + (f.piece == 0 ? 0 : int(f.piece >> 2 & 15)); }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
   /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
@@ -210,12 +274,13 @@ public:
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator out) const
   {
-    const std::uint8_t l = std::uint8_t(f.level + 1);
+    CGAL_precondition(f.level < 63);
+    const int l = int(f.level) + 1;
     const double h = 0.5 * leg(f); // signed, like leg()
-    *out++ = Fragment{f.u, f.v, f.face, l, f.inverted};
-    *out++ = Fragment{f.u + h, f.v, f.face, l, f.inverted};
-    *out++ = Fragment{f.u, f.v + h, f.face, l, f.inverted};
-    *out++ = Fragment{f.u + h, f.v + h, f.face, l, !f.inverted}; // the middle one is flipped
+    *out++ = make_fragment(f.u, f.v, f.face, l, f.inverted, f.piece);
+    *out++ = make_fragment(f.u + h, f.v, f.face, l, f.inverted, f.piece);
+    *out++ = make_fragment(f.u, f.v + h, f.face, l, f.inverted, f.piece);
+    *out++ = make_fragment(f.u + h, f.v + h, f.face, l, !f.inverted, f.piece); // the middle one is flipped
     return out;
   }
 
@@ -230,11 +295,26 @@ public:
   bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
               OutputIterator children) const
   {
+    if(f.piece == 0) return refine(f, Whole_face(), near, around, radius, children);
+    return refine(f, frame(faces_[f.face], f.piece), near, around, radius, children);
+  }
+
+  /// @}
+
+private:
+  template <class Map, class PointRange, class OutputIterator>
+  bool refine(const Fragment& f, const Map& map, const PointRange& near, const PointRange& around, double radius,
+              OutputIterator children) const
+  {
     const Face& face = faces_[f.face];
     const double h = leg(f), m = 0.5 * h;
+    auto point = [&](double s, double t) {
+      const std::array<double, 2> uv = map(s, t);
+      return at(face, uv[0], uv[1]);
+    };
     // corners of f, then the midpoints of its edges: f's children are (0 3 4), (3 1 5), (4 5 2) and
     // the flipped (5 4 3), each listed as corners() lists it (right-angle corner, along u, along v)
-    Point p[6] = {at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)};
+    Point p[6] = {point(f.u, f.v), point(f.u + h, f.v), point(f.u, f.v + h)};
     static constexpr int child[4][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}, {5, 4, 3}};
 
     // bit i of in[j]: point j is covered by ball i of `near`, as is_covered() decides it
@@ -250,9 +330,9 @@ public:
     };
     test(0, 3);
     if(in[0] & in[1] & in[2]) return true;
-    p[3] = at(face, f.u + m, f.v);
-    p[4] = at(face, f.u, f.v + m);
-    p[5] = at(face, f.u + m, f.v + m);
+    p[3] = point(f.u + m, f.v);
+    p[4] = point(f.u, f.v + m);
+    p[5] = point(f.u + m, f.v + m);
     test(3, 6);
 
     // The balls a child's union test keeps meet the child's circumscribing ball: about its centroid,
@@ -287,13 +367,13 @@ public:
       return inside[j] == 1;
     };
 
-    const std::uint8_t l = std::uint8_t(f.level + 1);
+    const int l = int(f.level) + 1;
     for(int c = 0; c < 4; ++c) {
       const int* t = child[c];
       // as split() makes them
-      const Fragment fc = c == 3 ? Fragment{f.u + m, f.v + m, f.face, l, !f.inverted}
-                                 : Fragment{c == 1 ? f.u + m : f.u, c == 2 ? f.v + m : f.v, f.face, l,
-                                            f.inverted};
+      const Fragment fc = c == 3 ? make_fragment(f.u + m, f.v + m, f.face, l, !f.inverted, f.piece)
+                                 : make_fragment(c == 1 ? f.u + m : f.u, c == 2 ? f.v + m : f.v, f.face, l,
+                                                 f.inverted, f.piece);
       if(!(area(fc) > 0)) continue;
       if(in[t[0]] & in[t[1]] & in[t[2]]) continue;
       const Point corner[3] = {p[t[0]], p[t[1]], p[t[2]]};
@@ -306,9 +386,18 @@ public:
     return false;
   }
 
-  /// @}
+  static Fragment make_fragment(double u, double v, std::uint32_t face, int level, bool inverted, std::uint32_t piece)
+  {
+    Fragment f;
+    f.u = u;
+    f.v = v;
+    f.face = face;
+    f.level = std::uint32_t(level) & 63u;
+    f.inverted = inverted ? 1u : 0u;
+    f.piece = piece;
+    return f;
+  }
 
-private:
   struct Points_view
   {
     const Point *first, *last;
@@ -321,7 +410,174 @@ private:
     Point v0, e1, e2;   // the rotated triangle: v0, v0 + e1, v0 + e2
     double area;
     std::uint8_t first; // which given corner is v0
+    bool cap;           // the largest angle is 120 degrees or more
+    std::uint8_t apex;  // corner (0: v0, 1: v0 + e1, 2: v0 + e2) of a cap's largest angle, else
+                        // the corner opposite the shortest edge
+    float foot;         // a cap: where the altitude from the apex meets the opposite edge, from 0
+                        // at the next corner to 1 at the one after
   };
+
+  // the corners of the face in its parameter space, and an affine map from a piece's parameters
+  // (s, t) to the face's (u, v) = c + s a + t b
+  static constexpr double corner_u[3] = {0, 1, 0}, corner_v[3] = {0, 0, 1};
+  struct Frame
+  {
+    double cu, cv, au, av, bu, bv;
+    std::array<double, 2> operator()(double s, double t) const { return {{cu + s * au + t * bu, cv + s * av + t * bv}}; }
+  };
+  struct Whole_face // the frame of piece 0: (u, v) = (s, t)
+  {
+    std::array<double, 2> operator()(double s, double t) const { return {{s, t}}; }
+  };
+
+  // Pieces: bits 0-1 the kind (0 the whole face, 1 a row of a needle, 2 and 3 a row of the first or
+  // second needle of a cap), 2-5 k (a needle's rows are 2^k; a cap's split point is a multiple of
+  // 2^-k along the edge), 6 which triangle of the row, 7-24 the row.
+  static constexpr int max_k = 12;
+  static std::uint32_t piece_code(int kind, int k, int half, std::uint32_t row)
+  {
+    return std::uint32_t(kind) | std::uint32_t(k) << 2 | std::uint32_t(half) << 6 | row << 7;
+  }
+  static int floor_log2(std::uint32_t n) // n >= 1
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    return 31 - __builtin_clz(n);
+#else
+    int l = 0;
+    while(n >>= 1) ++l;
+    return l;
+#endif
+  }
+  // a cap's split point: the multiple m / 2^k of the edge opposite its apex nearest to the foot
+  static std::uint32_t cap_split(const Face& f, int k)
+  {
+    const double n = double(std::uint32_t(1) << k);
+    return std::uint32_t((std::min)(n, (std::max)(0., std::floor(double(f.foot) * n + 0.5))));
+  }
+
+  // the number of rows of a piece's needle, as a power of two, or -1 if the needle is empty (a cap
+  // split at a corner)
+  static int rows_log2(const Face& f, int kind, int k)
+  {
+    if(kind == 1) return k;
+    const std::uint32_t m = cap_split(f, k), length = kind == 2 ? m : (std::uint32_t(1) << k) - m;
+    return length == 0 ? -1 : floor_log2(length);
+  }
+
+  // a piece's area over its face's: its needle's share of the face (all of it, or the cap's part on
+  // one side of the split point), times its row's share of the needle, which is h (1 - j h) for the
+  // first triangle of row j, h (1 - (j + 1) h) for the second, h = 2^-rows
+  CGAL_PDS_NOINLINE static double piece_share(const Face& f, std::uint32_t piece)
+  {
+    const int kind = int(piece & 3), k = int(piece >> 2 & 15), half = int(piece >> 6 & 1);
+    const double j = double(piece >> 7);
+    double side = 1;
+    if(kind != 1) {
+      const double t = double(cap_split(f, k)) * internal::power_of_half(std::size_t(k));
+      side = kind == 2 ? t : 1 - t;
+    }
+    const double h = internal::power_of_half(std::size_t(rows_log2(f, kind, k)));
+    return side * h * (1 - (j + half) * h);
+  }
+
+  // a cap's two needles (P, Q, R): (apex, split point, next corner) and (apex, split point, corner
+  // after); a needle face is (corner after the apex, the next one, apex), PQ its shortest edge.
+  // Writes P, Q, R and returns the number of rows of the needle, as a power of two, or -1 if the
+  // needle is empty.
+  static int needle(const Face& f, int kind, int k, double P[2], double Q[2], double R[2])
+  {
+    const int a = f.apex, b = (a + 1) % 3, c = (a + 2) % 3;
+    if(kind == 1) {
+      P[0] = corner_u[b], P[1] = corner_v[b];
+      Q[0] = corner_u[c], Q[1] = corner_v[c];
+      R[0] = corner_u[a], R[1] = corner_v[a];
+      return k;
+    }
+    const double t = double(cap_split(f, k)) * internal::power_of_half(std::size_t(k));
+    P[0] = corner_u[a], P[1] = corner_v[a];
+    Q[0] = corner_u[b] + t * (corner_u[c] - corner_u[b]);
+    Q[1] = corner_v[b] + t * (corner_v[c] - corner_v[b]);
+    const int r = kind == 2 ? b : c;
+    R[0] = corner_u[r], R[1] = corner_v[r];
+    return rows_log2(f, kind, k);
+  }
+
+  // the frame of a piece other than 0; its corners' parameters have the bits of the fragment's level
+  // plus those of the rows of its needle, plus for a cap those of its split point (see level())
+  CGAL_PDS_NOINLINE static Frame frame(const Face& f, std::uint32_t piece)
+  {
+    const int kind = int(piece & 3), k = int(piece >> 2 & 15), half = int(piece >> 6 & 1);
+    const double j = double(piece >> 7);
+    double P[2], Q[2], R[2];
+    const int rows = needle(f, kind, k, P, Q, R);
+    const double h = internal::power_of_half(std::size_t(rows));
+    double p0[2], p1[2], q0[2], q1[2]; // the row's corners: P and Q moved j and j + 1 rows towards R
+    for(int i = 0; i < 2; ++i) {
+      p0[i] = P[i] + j * h * (R[i] - P[i]);
+      p1[i] = P[i] + (j + 1) * h * (R[i] - P[i]);
+      q0[i] = Q[i] + j * h * (R[i] - Q[i]);
+      q1[i] = Q[i] + (j + 1) * h * (R[i] - Q[i]);
+    }
+    if(half == 0) return Frame{p0[0], p0[1], q0[0] - p0[0], q0[1] - p0[1], p1[0] - p0[0], p1[1] - p0[1]};
+    return Frame{q0[0], q0[1], q1[0] - q0[0], q1[1] - q0[1], p1[0] - q0[0], p1[1] - q0[1]};
+  }
+
+  // 0 if the face stays whole at minimum distance d; otherwise k for its pieces (piece_code())
+  static int cut_level(const Face& f, double d)
+  {
+    // lengths of the edges opposite corners 0, 1, 2
+    const double l[3] = {distance(f.e1, f.e2), length(f.e2), length(f.e1)};
+    double ratio;
+    if(f.cap) { // the opposite edge against the height over it, or D
+      const double a = l[f.apex];
+      ratio = a / (std::max)(d, 2 * f.area / a);
+    } else { // the longest edge against the shortest, or D
+      ratio = (std::max)({l[0], l[1], l[2]}) / (std::max)(d, l[f.apex]);
+    }
+    if(!(ratio >= 4)) return 0;
+    return ratio >= 0x1.0p12 ? max_k : floor_log2(std::uint32_t(ratio));
+  }
+  // the cap test and the apex, from the shape of the face only
+  static void classify(Face& f)
+  {
+    // edges opposite corners 0, 1, 2, divided by the largest coordinate so that squares neither
+    // underflow nor overflow
+    Point e[3];
+    for(int i = 0; i < 3; ++i) {
+      e[0][i] = f.e2[i] - f.e1[i];
+      e[1][i] = f.e2[i];
+      e[2][i] = f.e1[i];
+    }
+    double m = 0;
+    for(const Point& x : e)
+      for(double c : x) m = (std::max)(m, std::abs(c));
+    f.cap = false;
+    f.apex = 0;
+    f.foot = 0.5f;
+    if(!(m > 0) || !std::isfinite(m)) return;
+    double l2[3];
+    for(int i = 0; i < 3; ++i) {
+      for(double& c : e[i]) c /= m;
+      l2[i] = dot(e[i], e[i]);
+    }
+    const int longest = l2[0] >= l2[1] ? (l2[0] >= l2[2] ? 0 : 2) : (l2[1] >= l2[2] ? 1 : 2);
+    const int shortest = l2[0] <= l2[1] ? (l2[0] <= l2[2] ? 0 : 2) : (l2[1] <= l2[2] ? 1 : 2);
+    const double b2 = l2[(longest + 1) % 3], c2 = l2[(longest + 2) % 3];
+    // the angle opposite the longest edge a is 120 degrees or more: a^2 >= b^2 + c^2 + b c
+    f.cap = l2[longest] >= b2 + c2 + std::sqrt(b2 * c2);
+    f.apex = std::uint8_t(f.cap ? longest : shortest);
+    if(f.cap) {
+      // the foot of the altitude on the edge from corner apex + 1 to apex + 2
+      const int a = f.apex, b = (a + 1) % 3;
+      const Point corner[3] = {{{0, 0, 0}}, e[2], e[1]}; // scaled, relative to v0
+      Point ba, bc;
+      for(int i = 0; i < 3; ++i) {
+        ba[i] = corner[a][i] - corner[b][i];
+        bc[i] = corner[(a + 2) % 3][i] - corner[b][i];
+      }
+      f.foot = float(dot(ba, bc) / dot(bc, bc));
+    }
+  }
 
   // A ball of `radius` covers a fragment if the computed corners are within the square root of this
   // of its centre; negative if no fragment can be proven covered. The margin is more than the
@@ -337,7 +593,10 @@ private:
   {
     const Face& face = faces_[f.face];
     const double h = leg(f);
-    return {{at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)}};
+    if(f.piece == 0) return {{at(face, f.u, f.v), at(face, f.u + h, f.v), at(face, f.u, f.v + h)}};
+    const Frame m = frame(face, f.piece);
+    const std::array<double, 2> q[3] = {m(f.u, f.v), m(f.u + h, f.v), m(f.u, f.v + h)};
+    return {{at(face, q[0][0], q[0][1]), at(face, q[1][0], q[1][1]), at(face, q[2][0], q[2][1])}};
   }
 
   // the signed leg length in parameter space
@@ -364,6 +623,10 @@ private:
     if(!(m > 0) || !std::isfinite(m)) return m;
     const Point b{{a[0] / m, a[1] / m, a[2] / m}};
     return m * std::sqrt(dot(b, b));
+  }
+  static double distance(const Point& a, const Point& b)
+  {
+    return length(Point{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}});
   }
   static double squared_distance(const Point& a, const Point& b)
   {

@@ -7,6 +7,7 @@
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/optional_operations.h>
 
 #include <algorithm>
 #include <array>
@@ -47,7 +48,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
 
   std::vector<Fragment> roots;
-  traits.initial_fragments(std::back_inserter(roots));
+  root_fragments(traits, d, std::back_inserter(roots));
   double total_area = 0;
   for(const Fragment& f : roots) total_area += traits.area(f);
   check_surface_area(total_area, "certify");
@@ -90,7 +91,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   std::vector<Item> stack, deferred;
   for(const Fragment& root : roots) {
     if(!(traits.area(root) > 0)) continue;
-    stack.push_back(Item{root, 0});
+    stack.push_back(Item{root, root_depth(traits, root)});
     while(!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();

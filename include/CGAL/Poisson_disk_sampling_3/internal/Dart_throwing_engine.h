@@ -7,6 +7,7 @@
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Active_fragment_pool.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Neighbor_buckets.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/optional_operations.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
@@ -27,40 +28,6 @@ namespace Poisson_disk_sampling_3 {
 namespace internal {
 
 typedef std::array<double, 3> Point_d;
-
-/// whether a model offers the optional `is_covered_by_union(fragment, centers, radius)`
-template <class Traits, class = void>
-struct Has_union_coverage : std::false_type {};
-template <class Traits>
-struct Has_union_coverage<Traits, std::void_t<decltype(std::declval<const Traits&>().is_covered_by_union(
-                                      std::declval<const typename Traits::Fragment&>(),
-                                      std::declval<const std::vector<std::array<double, 3>>&>(), 1.))>>
-    : std::true_type {};
-
-/// whether a model offers the optional `prefetch(fragment)`
-template <class Traits, class = void>
-struct Has_prefetch : std::false_type {};
-template <class Traits>
-struct Has_prefetch<Traits, std::void_t<decltype(std::declval<const Traits&>().prefetch(
-                                std::declval<const typename Traits::Fragment&>()))>> : std::true_type {};
-
-/// whether a model offers the optional `level(fragment)`
-template <class Traits, class = void>
-struct Has_level : std::false_type {};
-template <class Traits>
-struct Has_level<Traits, std::void_t<decltype(std::declval<const Traits&>().level(
-                             std::declval<const typename Traits::Fragment&>()))>> : std::true_type {};
-
-/// whether a model offers the optional `refine(fragment, near, around, radius, children)`
-template <class Traits, class = void>
-struct Has_refine : std::false_type {};
-template <class Traits>
-struct Has_refine<Traits, std::void_t<decltype(std::declval<const Traits&>().refine(
-                              std::declval<const typename Traits::Fragment&>(),
-                              std::declval<const std::vector<std::array<double, 3>>&>(),
-                              std::declval<const std::vector<std::array<double, 3>>&>(), 1.,
-                              std::declval<std::back_insert_iterator<std::vector<typename Traits::Fragment>>>()))>>
-    : std::true_type {};
 
 /// the stages of a batch, in order, as `Engine_statistics::stage_seconds` counts them
 enum Engine_stage {
@@ -160,8 +127,14 @@ public:
   template <class SampleOutput>
   Engine_statistics run(SampleOutput&& output)
   {
+    // the pieces of long thin faces are counted before any is stored: they take memory as points do
+    const std::size_t pieces = extra_root_fragments(traits_, d_);
+    if(pieces > max_points_)
+      throw Point_limit_exceeded("at this minimum distance, long thin faces would be cut into " + std::to_string(pieces) +
+                                 " more pieces than they are faces, more than maximum_number_of_points (" +
+                                 std::to_string(max_points_) + "); use a larger distance or raise the bound");
     std::vector<Fragment> roots;
-    traits_.initial_fragments(std::back_inserter(roots));
+    root_fragments(traits_, d_, std::back_inserter(roots));
     double total_area = 0, max_area = 0;
     for(const Fragment& f : roots) {
       const double a = traits_.area(f);

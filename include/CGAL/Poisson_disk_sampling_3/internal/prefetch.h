@@ -4,6 +4,13 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_PREFETCH_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_PREFETCH_H
 
+// keeps a function out of its callers, so that their common path stays small enough to be inlined
+#if defined(__GNUC__) || defined(__clang__)
+#  define CGAL_PDS_NOINLINE __attribute__((noinline))
+#else
+#  define CGAL_PDS_NOINLINE
+#endif
+
 namespace CGAL {
 namespace Poisson_disk_sampling_3 {
 namespace internal {
