@@ -16,6 +16,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace bench {
 
@@ -25,15 +26,40 @@ typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::
 /// about 0.6965 area / d^2 points (the jamming density of maximal Poisson-disk sets in the plane).
 inline double distance_for(double area, double n) { return std::sqrt(0.6965 * area / n); }
 
-/// A file of CGAL's data set (`lion.off`, ...), or "armadillo_loop3": armadillo.off Loop-subdivided
-/// three times, 52,000 faces x 4^3 = 3.3 million faces. Read or made once per process.
+/// A cylinder of radius 1 and height 30, 64 cells around and `rings` along, two triangles a cell.
+inline void make_cylinder(Mesh& m, int rings)
+{
+  const int segments = 64;
+  std::vector<Mesh::Vertex_index> v;
+  for(int r = 0; r <= rings; ++r)
+    for(int i = 0; i < segments; ++i) {
+      const double a = 6.283185307179586 * i / segments;
+      v.push_back(m.add_vertex(Mesh::Point(std::cos(a), std::sin(a), 30. * r / rings)));
+    }
+  for(int r = 0; r < rings; ++r)
+    for(int i = 0; i < segments; ++i) {
+      const auto a = v[r * segments + i], b = v[r * segments + (i + 1) % segments];
+      const auto c = v[(r + 1) * segments + i], d = v[(r + 1) * segments + (i + 1) % segments];
+      m.add_face(a, b, d);
+      m.add_face(a, d, c);
+    }
+}
+
+/// A file of CGAL's data set (`lion.off`, ...); "armadillo_loop3": armadillo.off Loop-subdivided
+/// three times, 52,000 faces x 4^3 = 3.3 million faces; "cylinder_128": a cylinder 30 high, of
+/// radius 1, made of 128 triangles as high as it is and 0.1 wide; "cylinder_rings": the same surface
+/// cut into 306 rings, its triangles about as high as they are wide. Read or made once per process.
 inline const Mesh& mesh(const std::string& name)
 {
   static std::map<std::string, std::unique_ptr<Mesh>> cache;
   auto& m = cache[name];
   if(!m) {
     m.reset(new Mesh);
-    if(name == "armadillo_loop3") {
+    if(name == "cylinder_128") {
+      make_cylinder(*m, 1);
+    } else if(name == "cylinder_rings") {
+      make_cylinder(*m, 306);
+    } else if(name == "armadillo_loop3") {
       *m = mesh("armadillo.off");
       CGAL::Subdivision_method_3::Loop_subdivision(*m, CGAL::parameters::number_of_iterations(3));
     } else if(!CGAL::IO::read_polygon_mesh(std::string(CGAL_PDS_DATA_DIR) + "/" + name, *m)) {

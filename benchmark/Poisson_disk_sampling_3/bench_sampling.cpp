@@ -290,17 +290,24 @@ public:
   }
 };
 
-// Darts per sample and time with and without the union test, same mesh, distance and seed; args: n
-void union_test_case(benchmark::State& state, const std::string& name)
+// the triangle model of a mesh, its faces in the mesh's order
+PDS::Triangle_fragment_traits_3 triangles_of(const Mesh& m)
 {
-  const Mesh& m = mesh(name);
-  const double d = distance_for(PMP::area(m), double(state.range(0)));
   PDS::Triangle_fragment_traits_3 traits;
   for(auto f : faces(m)) {
     const auto h = halfedge(f, m);
     auto p = [&](Mesh::Vertex_index v) { const Point& q = m.point(v); return PDS::Triangle_fragment_traits_3::Point{{q.x(), q.y(), q.z()}}; };
     traits.add_triangle(p(source(h, m)), p(target(h, m)), p(target(next(h, m), m)));
   }
+  return traits;
+}
+
+// Darts per sample and time with and without the union test, same mesh, distance and seed; args: n
+void union_test_case(benchmark::State& state, const std::string& name)
+{
+  const Mesh& m = mesh(name);
+  const double d = distance_for(PMP::area(m), double(state.range(0)));
+  const PDS::Triangle_fragment_traits_3 traits = triangles_of(m);
   const With_union_test_only with_union(traits);
   const Without_union_test plain(traits);
   PDS::Sampling_statistics with, without;
@@ -329,6 +336,53 @@ void union_test_case(benchmark::State& state, const std::string& name)
   state.counters["share_of_darts_accepted"] = double(n_with) / double(with.darts);
 }
 
+// The model as it is, without the pieces it cuts long thin faces into: whole faces only.
+class Whole_faces_only : public With_union_test_only
+{
+public:
+  using With_union_test_only::With_union_test_only;
+  // hides the base's initial_fragments(out, d)
+  template <class Out> Out initial_fragments(Out out) const { return base_.initial_fragments(out); }
+  template <class PointRange, class OutputIterator>
+  bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
+              OutputIterator children) const
+  {
+    return base_.refine(f, near, around, radius, children);
+  }
+};
+
+// Long thin faces cut into pieces (the model as it is) against whole faces, about n points; args: n
+void long_faces_case(benchmark::State& state, const std::string& name)
+{
+  const Mesh& m = mesh(name);
+  const double d = distance_for(PMP::area(m), double(state.range(0)));
+  const PDS::Triangle_fragment_traits_3 traits = triangles_of(m);
+  const Whole_faces_only whole(traits);
+  std::vector<Point> points[2];
+  PDS::Sampling_statistics stats[2];
+  const std::array<double, 2> best = fastest_alternating<2>(state, [&](std::size_t v) {
+    points[v].clear();
+    auto out = boost::make_function_output_iterator([&](const PDS::Triangle_fragment_traits_3::Sample& s) {
+      points[v].push_back(Point(s.point[0], s.point[1], s.point[2]));
+    });
+    const auto np = PDS::parameters::minimum_distance(d).statistics(std::ref(stats[v]));
+    if(v == 0) PDS::sample_surface(traits, out, np);
+    else PDS::sample_surface(whole, out, np);
+  });
+  for(const auto& p : points)
+    if(!validate(state, m, p, d)) return;
+  state.counters["faces"] = double(num_faces(m));
+  state.counters["points"] = double(points[0].size());
+  state.counters["seconds"] = best[0];
+  state.counters["seconds_whole_faces"] = best[1];
+  state.counters["whole_faces_over_pieces"] = best[1] / best[0];
+  state.counters["darts_per_point"] = double(stats[0].darts) / double(points[0].size());
+  state.counters["darts_per_point_whole_faces"] = double(stats[1].darts) / double(points[1].size());
+  state.counters["peak_active_fragments_per_point"] = double(stats[0].peak_active_fragments) / double(points[0].size());
+  state.counters["peak_active_fragments_per_point_whole_faces"] =
+      double(stats[1].peak_active_fragments) / double(points[1].size());
+}
+
 void register_cases()
 {
   for(const char* name : {"lion.off", "armadillo.off", "armadillo_loop3"})
@@ -349,6 +403,14 @@ void register_cases()
   for(int n : {100000, 1000000})
     benchmark::RegisterBenchmark("union_test/lion.off", [](benchmark::State& s) { union_test_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  // CGAL's meshes with the longest faces at D (the slowest at 10,000 points with whole faces), two
+  // without such faces, and a cylinder of full-height triangles against the same surface in rings
+  for(const char* name : {"pinion.off", "pipe.off", "anchor.off", "joint.off", "boeing.off", "cheese.off",
+                          "blade.off", "lion.off", "fandisk.off", "cylinder_128", "cylinder_rings"})
+    benchmark::RegisterBenchmark((std::string("long_faces/") + name).c_str(),
+                                 [name](benchmark::State& s) { long_faces_case(s, name); })
+        ->Arg(std::string(name).rfind("cylinder", 0) == 0 ? 2000 : 10000)
+        ->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(const char* name : {"lion.off", "armadillo_loop3"})
     benchmark::RegisterBenchmark((std::string("linearity/") + name).c_str(),
                                  [name](benchmark::State& s) { linearity_case(s, name); })

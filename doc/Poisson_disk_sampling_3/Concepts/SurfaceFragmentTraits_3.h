@@ -41,6 +41,14 @@ public:
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out) const;
 
+  /// Optional. The initial fragments for the minimum distance `minimum_distance`, which must tile the
+  /// same surface; the engine and the maximality certificate use it instead of the one above when a
+  /// model defines it. A model whose root fragments would split badly at some scale cuts them first
+  /// (`Triangle_fragment_traits_3` cuts long thin triangles into pieces about D long, whose count it
+  /// checks against `maximum_number_of_points` before storing any).
+  template <class OutputIterator>
+  OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const;
+
   /// the area of a fragment, or an upper bound of it for models that sample with rejection; the engine
   /// chooses fragments in proportion to it (requirement 2)
   double area(const Fragment& f) const;
@@ -67,9 +75,12 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const;
 
-  /// Optional. The number of splits between `f` and the root fragment it comes from (0 for the
-  /// fragments of `initial_fragments()`). A model whose fragments carry this number spares the engine
-  /// from storing it beside each active fragment (for the triangle model, 24 bytes instead of 32).
+  /// Optional. The depth of `f`: the number of splits between `f` and the root fragment it comes
+  /// from (0 for the fragments of `initial_fragments(out)`), or as many as it takes to shrink a whole
+  /// root of `initial_fragments(out)` to the size of `f` (a piece of `initial_fragments(out, d)` may
+  /// start deeper than 0). The engine stops splitting at depth 40, the certificate at 48. A model
+  /// whose fragments carry this number spares the engine from storing it beside each active fragment
+  /// (for the triangle model, 24 bytes instead of 32).
   int level(const Fragment& f) const;
 
   /// Optional. Starts loading into the cache what `random_sample(f, rng)` will read, without waiting
