@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -81,6 +82,46 @@ TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)
   for(const Point& p : points) EXPECT_GT(CGAL::squared_distance(p, *check.uncovered_point), d * d);
   // the hole is about one disk, not the whole surface
   EXPECT_LT(check.uncovered_area, 0.1 * CGAL::Polygon_mesh_processing::area(m));
+}
+
+// A set far from maximal for the distance asked (lion.off sampled at about 20,000 points, checked at
+// half their distance): the certificate answers with a proven gap and an upper bound of the uncovered
+// area, after bounded work (it used to refine the pieces across every ball's boundary to 2^-24 d^2,
+// which took longer than the limit below). Its bound is above the area that a dense sample of the
+// surface finds uncovered, and below the surface's.
+TEST(IsMaximal, FarFromMaximalIsAnsweredAfterBoundedWork)
+{
+  const Mesh m = load_mesh("lion.off");
+  const double area = CGAL::Polygon_mesh_processing::area(m);
+  const double d = distance_for(area, 20000);
+  std::vector<Point> points;
+  PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+  const auto start = std::chrono::steady_clock::now();
+  const auto check = PDS::is_maximal(m, points, d / 2);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.);
+  EXPECT_FALSE(check);
+  ASSERT_TRUE(check.uncovered_point.has_value());
+  for(const Point& p : points) EXPECT_GT(CGAL::squared_distance(p, *check.uncovered_point), d * d / 4);
+  // the uncovered share of a sample of the surface: points of the faces in proportion to their area
+  std::vector<Point> grid;
+  PDS::sample_triangle_mesh(m, std::back_inserter(grid), PDS::parameters::minimum_distance(d / 5));
+  PDS::internal::Point_hash_grid samples(d * (1 + 0x1.0p-10));
+  std::vector<std::array<double, 3>> xyz;
+  for(const Point& p : points) xyz.push_back({{p.x(), p.y(), p.z()}});
+  for(const auto& p : xyz) samples.insert(p.data());
+  std::size_t uncovered = 0;
+  for(const Point& q : grid) {
+    const double x[3] = {q.x(), q.y(), q.z()};
+    bool covered = false;
+    samples.for_each_near(x, d / 2, [&](PDS::internal::Point_hash_grid::Index, const double* s) {
+      covered = covered || (s[0] - x[0]) * (s[0] - x[0]) + (s[1] - x[1]) * (s[1] - x[1]) + (s[2] - x[2]) * (s[2] - x[2]) <= d * d / 4;
+    });
+    uncovered += !covered;
+  }
+  const double share = double(uncovered) / double(grid.size());
+  EXPECT_GT(share, 0.2); // far from maximal indeed
+  EXPECT_GT(check.uncovered_area, 0.9 * share * area);
+  EXPECT_LT(check.uncovered_area, area);
 }
 
 TEST(IsMaximal, EmptySetOnASphereIsNotMaximal)

@@ -31,7 +31,8 @@ struct Certificate
 /// each piece (the model's conservative `is_covered`).
 ///
 /// The work is bounded. A piece whose reference point is farther than D from every sample (decided
-/// exactly) is a proven gap: it is refined only down to `leaf_area` for the area estimate. Pieces
+/// exactly) is a proven gap: it is refined only down to `leaf_area` for the area estimate; once a gap
+/// is proven and a quarter of `budget` more pieces decided, so is every piece not proven covered. Pieces
 /// still undecided below D^2 / 2^24 are deferred: in a maximal set they are the few that sit where two
 /// ball boundaries cross close to a piece's edge, and they are refined breadth-first down to
 /// `max_depth`, until a gap is proven or a budget is spent. Around a real gap, many pieces straddle its
@@ -62,7 +63,9 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
 
   enum Verdict { COVERED, GAP_LEAF, SPLIT };
   // decides one piece; records a proven gap
+  std::size_t decided_after_gap = 0;
   auto decide = [&](const Item& item) {
+    decided_after_gap += result.has_witness;
     const std::array<double, 3> ref = traits.reference_point(item.fragment);
     near.clear();
     bool ref_covered = false;
@@ -99,6 +102,12 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       if(v == COVERED) continue;
       const double area = traits.area(item.fragment);
       if(v == GAP_LEAF) result.uncovered_area += area;
+      // Once a gap is proven the answer is known, and what is left is the area estimate. After a
+      // quarter of the budget of decisions spent on it, a piece of leaf size that no single ball holds
+      // counts whole instead of being refined across the balls' boundaries down to the deferral size,
+      // which costs time and memory in proportion to the boundaries' length over that size.
+      else if(result.has_witness && area <= leaf_area && decided_after_gap > budget / 4)
+        result.uncovered_area += area;
       else if(area <= defer_area || item.depth >= max_depth) deferred.push_back(item);
       else split(item, stack);
     }
