@@ -108,8 +108,9 @@ TEST(BadInput, BoundHoldsWhileSampling)
 }
 
 // Long thin faces are cut into pieces about D long (Triangle_fragment_traits_3); the pieces count
-// against the bound too, before any is stored. A disk of 2000 slivers around its centre, 1 long and
-// 0.003 wide, at D = 0.01: about 22,000 points, but 127 pieces a face.
+// against the bound too (four per point of it), before any is stored, in both modes. A disk of 2000
+// slivers around its centre, 1 long and 0.003 wide, at D = 0.01: about 22,000 points, but 127 pieces
+// a face, 252,000 beyond one a face.
 TEST(BadInput, PiecesOfThinFacesCountAgainstTheBound)
 {
   std::vector<Point> p{Point(0, 0, 0)};
@@ -121,16 +122,22 @@ TEST(BadInput, PiecesOfThinFacesCountAgainstTheBound)
     t.push_back({0, 1 + i, 1 + (i + 1) % n});
   }
   std::vector<Point> out;
-  try {
-    PDS::sample_polygon_soup(p, t, std::back_inserter(out),
-                             PDS::parameters::minimum_distance(0.01).maximum_number_of_points(100000));
-    ADD_FAILURE() << "not refused";
-  } catch(const PDS::Point_limit_exceeded& e) {
-    EXPECT_NE(std::string(e.what()).find("pieces"), std::string::npos) << e.what();
-    EXPECT_TRUE(out.empty()) << "refused after sampling";
+  for(int count_mode = 0; count_mode < 2; ++count_mode) {
+    try {
+      if(count_mode)
+        PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                                 PDS::parameters::number_of_points(22000).maximum_number_of_points(50000));
+      else
+        PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                                 PDS::parameters::minimum_distance(0.01).maximum_number_of_points(50000));
+      ADD_FAILURE() << "not refused";
+    } catch(const PDS::Point_limit_exceeded& e) {
+      EXPECT_NE(std::string(e.what()).find("pieces"), std::string::npos) << e.what();
+      EXPECT_TRUE(out.empty()) << "refused after sampling";
+    }
   }
   PDS::sample_polygon_soup(p, t, std::back_inserter(out),
-                           PDS::parameters::minimum_distance(0.01).maximum_number_of_points(300000));
+                           PDS::parameters::minimum_distance(0.01).maximum_number_of_points(70000));
   EXPECT_GT(out.size(), 15000u);
   EXPECT_LT(out.size(), 30000u);
 }

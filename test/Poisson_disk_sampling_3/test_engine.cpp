@@ -526,7 +526,7 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
 // triangle's, and every point of the triangle lies in exactly one piece (or on the boundary between
 // pieces). They are few (fewer than 2 L / max(D, width) for a face L long), no longer than four
 // times max(D, shortest edge), nor than 4 L 2^-depth (the depth the engine's floor counts). Needles
-// and caps (corners nearly in line), of aspect ratios up to 10^4, with D from L down to L / 3000.
+// and caps (corners nearly in line), of aspect ratios up to 10^4, with D from L down to L / 30,000.
 TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;
@@ -539,7 +539,7 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
   };
   auto dot = [](const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
   auto norm = [&](const P& a) { return std::sqrt(dot(a, a)); };
-  int cut = 0, caps_cut = 0;
+  int cut = 0, caps_cut = 0, most_rows = 0;
   for(int trial = 0; trial < 400; ++trial) {
     P q[3];
     const double thinness = std::pow(10., -4 * rng.uniform());
@@ -556,7 +556,7 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
     const double edges[3] = {norm(sub(q[1], q[0])), norm(sub(q[2], q[1])), norm(sub(q[0], q[2]))};
     const double L = std::max({edges[0], edges[1], edges[2]}), shortest = std::min({edges[0], edges[1], edges[2]});
     const double width = 2 * area / L;
-    const double d = L * std::pow(10., -3.5 * rng.uniform());
+    const double d = L * std::pow(10., -4.5 * rng.uniform()); // down to L / 30,000: up to 2^12 rows
     std::vector<Fragment> pieces;
     traits.initial_fragments(std::back_inserter(pieces), d);
     ASSERT_FALSE(pieces.empty());
@@ -565,6 +565,7 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
       ++cut;
       caps_cut += cap;
     }
+    most_rows += traits.level(pieces.front()) == 12; // k = 12, the most
 
     double total = 0;
     std::vector<std::array<P, 3>> corners;
@@ -576,6 +577,12 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
       const double h = f.inverted ? -1. : 1.;
       corners.push_back({{point_at(traits, f, f.u, f.v), point_at(traits, f, f.u + h, f.v),
                           point_at(traits, f, f.u, f.v + h)}});
+      {
+        // its area is the area of its corners' triangle
+        const auto& c = corners.back();
+        EXPECT_NEAR(traits.area(f), 0.5 * norm(cross(sub(c[1], c[0]), sub(c[2], c[0]))), 1e-6 * traits.area(f))
+            << "trial " << trial;
+      }
       if(pieces.size() > 1) {
         const auto& c = corners.back();
         const double diameter = std::max({norm(sub(c[1], c[0])), norm(sub(c[2], c[1])), norm(sub(c[0], c[2]))});
@@ -607,8 +614,9 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
       ASSERT_GE(inside + near_edge, 1) << "trial " << trial << ": a point of the face is in no piece";
     }
   }
-  EXPECT_GT(cut, 200); // most faces are cut, caps included
+  EXPECT_GT(cut, 200); // most faces are cut, caps included, some into the most rows
   EXPECT_GT(caps_cut, 100);
+  EXPECT_GT(most_rows, 10);
 }
 
 // grid_cell() is the floor of the scaled coordinate, on both sides of zero and at integers.

@@ -256,9 +256,9 @@ public:
   /// face: its level in its piece, plus k for a piece (a row is about 2^-k of the face's length; 0
   /// for a whole face). The parameters of a fragment's corners have at most this many bits plus those
   /// of a cap's rows (at most 12): exact in double precision (52 bits) down to the engine's floor,
-  /// depth 40. Below it, in the maximality certificate's last levels, a parameter rounds by at most
-  /// 2^-53, which moves a corner by less than a quarter of `position_error()`, within the margin of
-  /// `is_covered()`.
+  /// depth 40. Below it, in the maximality certificate's last levels, a parameter is off by a few
+  /// 2^-53 at most, which moves a corner by less than a quarter of `position_error()`, within the
+  /// margin of `is_covered()`.
   int level(const Fragment& f) const { return int(f.level) + (f.piece == 0 ? 0 : int(f.piece >> 2 & 15)); }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
@@ -388,6 +388,7 @@ private:
 
   static Fragment make_fragment(double u, double v, std::uint32_t face, int level, bool inverted, std::uint32_t piece)
   {
+    CGAL_assertion(level >= 0 && level < 64);
     Fragment f;
     f.u = u;
     f.v = v;

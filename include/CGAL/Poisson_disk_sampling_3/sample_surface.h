@@ -168,6 +168,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     try {
       run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
                  false);
+    } catch(const Pieces_limit_exceeded&) {
+      throw;
     } catch(const Point_limit_exceeded&) {
       throw Point_limit_exceeded("a run of the search for number_of_points (" + std::to_string(n) +
                                  ") exceeded maximum_number_of_points (" + std::to_string(max_points) +
@@ -259,7 +261,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///   \cgalParamNBegin{maximum_number_of_points}
 ///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) a radius request whose area / (pi r^2)
 ///       exceeds it, or a `number_of_points` above it, before any large allocation; the number of samples
-///       accepted never exceeds it either}
+///       accepted never exceeds it either. Pieces that a model cuts its long faces into for the distance
+///       (`Triangle_fragment_traits_3`) may outnumber the faces by at most four times the bound.}
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{100 million}
 ///   \cgalParamNEnd

@@ -9,6 +9,8 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/optional_operations.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <iterator>
@@ -48,10 +50,9 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     int depth;
   };
 
-  std::vector<Fragment> roots;
-  root_fragments(traits, d, std::back_inserter(roots));
+  // the roots are made as they are certified, one at a time: a long face's pieces are not stored
   double total_area = 0;
-  for(const Fragment& f : roots) total_area += traits.area(f);
+  traits.initial_fragments(boost::make_function_output_iterator([&](const Fragment& f) { total_area += traits.area(f); }));
   check_surface_area(total_area, "certify");
   const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
   const double defer_area = d * d * 0x1.0p-24;
@@ -92,8 +93,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
 
   std::vector<Item> stack, deferred;
-  for(const Fragment& root : roots) {
-    if(!(traits.area(root) > 0)) continue;
+  root_fragments(traits, d, boost::make_function_output_iterator([&](const Fragment& root) {
+    if(!(traits.area(root) > 0)) return;
     stack.push_back(Item{root, root_depth(traits, root)});
     while(!stack.empty()) {
       const Item item = stack.back();
@@ -111,7 +112,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       else if(area <= defer_area || item.depth >= max_depth) deferred.push_back(item);
       else split(item, stack);
     }
-  }
+  }));
 
   std::size_t spent = 0;
   std::vector<Item> next;
