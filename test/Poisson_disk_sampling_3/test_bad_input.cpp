@@ -108,7 +108,7 @@ TEST(BadInput, BoundHoldsWhileSampling)
 }
 
 // Long thin faces are cut into pieces about D long (Triangle_fragment_traits_3); the pieces count
-// against the bound too (four per point of it), before any is stored, in both modes. A disk of 2000
+// against the bound too (four per point of it, six per face), before any is stored, in both modes. A disk of 2000
 // slivers around its centre, 1 long and 0.003 wide, at D = 0.01: about 22,000 points, but 127 pieces
 // a face, 252,000 beyond one a face.
 TEST(BadInput, PiecesOfThinFacesCountAgainstTheBound)

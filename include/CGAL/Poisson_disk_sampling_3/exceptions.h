@@ -29,8 +29,8 @@ public:
 /// `maximum_number_of_points` (default 100 million): the estimate area / (pi r^2) of a radius
 /// request, or the target of a `number_of_points` request, is checked first, and the actual count
 /// while sampling (thin or scattered surfaces can exceed the estimate). Also thrown, before any piece
-/// is stored, when long thin triangles would be cut into more than four times that many pieces beyond
-/// one per face (`Triangle_fragment_traits_3`).
+/// is stored, when long thin triangles would be cut into more pieces beyond one per face than four
+/// times that bound plus six per face, the memory those take (`Triangle_fragment_traits_3`).
 class Point_limit_exceeded : public std::length_error
 {
 public:

@@ -262,7 +262,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) a radius request whose area / (pi r^2)
 ///       exceeds it, or a `number_of_points` above it, before any large allocation; the number of samples
 ///       accepted never exceeds it either. Pieces that a model cuts its long faces into for the distance
-///       (`Triangle_fragment_traits_3`) may outnumber the faces by at most four times the bound.}
+///       (`Triangle_fragment_traits_3`) may outnumber the faces by at most four times the bound plus six
+///       per face.}
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{100 million}
 ///   \cgalParamNEnd

@@ -136,14 +136,17 @@ public:
   Engine_statistics run(SampleOutput&& output)
   {
     // The pieces of long thin faces are counted before any is stored. A piece takes about 50 bytes (24
-    // in the list of roots, 24 and a share of a chunk in the pool), a quarter of what a sample takes
-    // at the peak (about 200): four per point of the bound keep them within the memory it allows.
-    const std::size_t pieces = extra_root_fragments(traits_, d_);
-    if(pieces / 4 > max_points_)
+    // in the list of roots, 24 and a share of a chunk in the pool): the memory budget, 200 bytes a
+    // sample and 300 a face, holds four pieces per point of the bound and six per face.
+    const std::pair<std::size_t, std::size_t> roots_count = count_root_fragments(traits_, d_);
+    const std::size_t faces = roots_count.first;
+    const std::size_t pieces = roots_count.second > faces ? roots_count.second - faces : 0;
+    if(double(pieces) > 4 * double(max_points_) + 6 * double(faces))
       throw Pieces_limit_exceeded("at the minimum distance " + number_text(d_) + ", long thin faces would be cut into " +
                                   std::to_string(pieces) + " more pieces than they are faces, more than four times "
-                                  "maximum_number_of_points (" + std::to_string(max_points_) +
-                                  "); use a larger distance, raise the bound, or split the long edges");
+                                  "maximum_number_of_points (" + std::to_string(max_points_) + ") plus six per face (" +
+                                  std::to_string(faces) + "); use a larger distance, raise the bound, or split the "
+                                  "long edges");
     std::vector<Fragment> roots;
     root_fragments(traits_, d_, std::back_inserter(roots));
     double total_area = 0, max_area = 0;

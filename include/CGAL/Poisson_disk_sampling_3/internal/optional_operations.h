@@ -103,21 +103,15 @@ struct Counting_output
   }
 };
 
-/// The number of root fragments for minimum distance d beyond the ones the model has without it (one
-/// per face for triangles), computed without storing them: the long thin faces' pieces.
+/// The numbers of root fragments without and with minimum distance d (one per face for triangles, and
+/// with d the long thin faces' pieces), computed without storing them.
 template <class Traits>
-std::size_t extra_root_fragments(const Traits& traits, double d)
+std::pair<std::size_t, std::size_t> count_root_fragments(const Traits& traits, double d)
 {
-  if constexpr(Has_roots_for_distance<Traits>::value) {
-    std::size_t with_d = 0, without = 0;
-    traits.initial_fragments(Counting_output{&with_d}, d);
-    traits.initial_fragments(Counting_output{&without});
-    return with_d > without ? with_d - without : 0;
-  } else {
-    (void)traits;
-    (void)d;
-    return 0;
-  }
+  std::size_t without = 0, with_d = 0;
+  traits.initial_fragments(Counting_output{&without});
+  root_fragments(traits, d, Counting_output{&with_d});
+  return {without, with_d};
 }
 
 } // namespace internal
