@@ -108,9 +108,9 @@ TEST(BadInput, BoundHoldsWhileSampling)
 }
 
 // Long thin faces are cut into pieces about D long (Triangle_fragment_traits_3); the pieces count
-// against the bound too (four per point of it, six per face), before any is stored, in both modes. A disk of 2000
-// slivers around its centre, 1 long and 0.003 wide, at D = 0.01: about 22,000 points, but 127 pieces
-// a face, 252,000 beyond one a face.
+// against the bound too (four per point of it, six per face), before any is stored, in both modes. A
+// disk of 2000 slivers around its centre, 1 long and 0.003 wide, at D = 0.01: about 22,000 points,
+// but 127 pieces a face, 252,000 beyond one a face.
 TEST(BadInput, PiecesOfThinFacesCountAgainstTheBound)
 {
   std::vector<Point> p{Point(0, 0, 0)};
