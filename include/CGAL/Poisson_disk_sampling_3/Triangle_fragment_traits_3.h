@@ -5,10 +5,10 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
-#include <CGAL/assertions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
@@ -31,10 +31,11 @@ namespace Poisson_disk_sampling_3 {
 /// distance D, one of the pieces `initial_fragments(out, D)` cuts it into (see "Long thin triangles"
 /// below). A fragment is stored as its face, its piece, its subdivision level and one corner in the
 /// piece's parameter space; the face is V0 + u (V1 - V0) + v (V2 - V0), and pieces have corners at
-/// dyadic (u, v), so that the corners of fragments have exact dyadic parameters (see `level()`). Each triangle is rotated to start at its lexicographically smallest corner,
-/// so that the samples depend on the geometry only, not on which corner a mesh data structure lists
-/// first (`Surface_mesh` and `Polyhedron_3` give the same points); `barycentric_coordinates()` maps
-/// back to the order in which the corners were given.
+/// dyadic (u, v), so that the corners of fragments have exact dyadic parameters (see `level()`).
+/// Each triangle is rotated to start at its lexicographically smallest corner, so that the samples
+/// depend on the geometry only, not on which corner a mesh data structure lists first (`Surface_mesh`
+/// and `Polyhedron_3` give the same points); `barycentric_coordinates()` maps back to the order in
+/// which the corners were given.
 ///
 /// Long thin triangles: subdivision keeps a triangle's shape, so a face L long and w wide would be cut
 /// into slivers as thin as the face, about (L / D)^2 of them around a face narrower than D. With a
@@ -49,8 +50,9 @@ namespace Poisson_disk_sampling_3 {
 ///
 /// With w the face's shortest edge (a needle) or its height over its longest edge (a cap), L its
 /// longest edge, and 2^k the largest power of two up to L / max(D, w) (at most 2^12), the rows are
-/// one to two times max(D, w) long (up to four times in a cap). A face with L < 4 max(D, w) stays whole: cutting it would save
-/// fewer darts than the pieces cost (lion.off at a million points is as fast either way).
+/// one to two times max(D, w) long (up to four times in a cap). A face with L < 4 max(D, w) stays
+/// whole: cutting it would save fewer darts than the pieces cost (lion.off at a million points is as
+/// fast either way).
 ///
 /// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
 /// `sample_surface()` to sample triangles from another source.
@@ -69,7 +71,7 @@ public:
     double u;                      ///< the corner at the right angle in the piece's parameter space
     double v;                      ///< (for a whole face, the face's (u, v))
     std::uint32_t face;            ///< index of the face, in the order of `add_triangle()`
-    std::uint32_t level : 6;       ///< subdivision level in the piece: legs 2^-level long in its parameter space
+    std::uint32_t level : 6;       ///< subdivision level in the piece: legs 2^-level long in its parameters
     std::uint32_t inverted : 1;    ///< the legs point towards -u and -v instead of +u and +v
     std::uint32_t piece : 25;      ///< which root piece of the face; 0 for the whole face
   };
@@ -185,7 +187,8 @@ public:
         const std::uint32_t rows = std::uint32_t(1) << rows_log2;
         for(std::uint32_t j = 0; j < rows; ++j) {
           *out++ = make_fragment(0., 0., i, 0, false, piece_code(kind, k, 0, j));
-          if(j + 1 < rows) *out++ = make_fragment(0., 0., i, 0, false, piece_code(kind, k, 1, j)); // the last row is one triangle
+          if(j + 1 < rows) // the last row is one triangle
+            *out++ = make_fragment(0., 0., i, 0, false, piece_code(kind, k, 1, j));
         }
       }
     }
@@ -424,7 +427,10 @@ private:
   struct Frame
   {
     double cu, cv, au, av, bu, bv;
-    std::array<double, 2> operator()(double s, double t) const { return {{cu + s * au + t * bu, cv + s * av + t * bv}}; }
+    std::array<double, 2> operator()(double s, double t) const
+    {
+      return {{cu + s * au + t * bu, cv + s * av + t * bv}};
+    }
   };
   struct Whole_face // the frame of piece 0: (u, v) = (s, t)
   {

@@ -52,7 +52,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
 
   // the roots are made as they are certified, one at a time: a long face's pieces are not stored
   double total_area = 0;
-  traits.initial_fragments(boost::make_function_output_iterator([&](const Fragment& f) { total_area += traits.area(f); }));
+  traits.initial_fragments(
+      boost::make_function_output_iterator([&](const Fragment& f) { total_area += traits.area(f); }));
   check_surface_area(total_area, "certify");
   const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
   const double defer_area = d * d * 0x1.0p-24;

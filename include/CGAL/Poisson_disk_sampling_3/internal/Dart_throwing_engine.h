@@ -142,11 +142,11 @@ public:
     const std::size_t faces = roots_count.first;
     const std::size_t pieces = roots_count.second > faces ? roots_count.second - faces : 0;
     if(double(pieces) > 4 * double(max_points_) + 6 * double(faces))
-      throw Pieces_limit_exceeded("at the minimum distance " + number_text(d_) + ", long thin faces would be cut into " +
-                                  std::to_string(pieces) + " more pieces than they are faces, more than four times "
-                                  "maximum_number_of_points (" + std::to_string(max_points_) + ") plus six per face (" +
-                                  std::to_string(faces) + "); use a larger distance, raise the bound, or split the "
-                                  "long edges");
+      throw Pieces_limit_exceeded("at the minimum distance " + number_text(d_) +
+                                  ", long thin faces would be cut into " + std::to_string(pieces) +
+                                  " more pieces than they are faces, more than four times maximum_number_of_points (" +
+                                  std::to_string(max_points_) + ") plus six per face (" + std::to_string(faces) +
+                                  "); use a larger distance, raise the bound, or split the long edges");
     std::vector<Fragment> roots;
     root_fragments(traits_, d_, std::back_inserter(roots));
     double total_area = 0, max_area = 0;

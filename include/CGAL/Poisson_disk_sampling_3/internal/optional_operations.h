@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_OPTIONAL_OPERATIONS_H
 
 #include <array>
+#include <cstddef>
 #include <iterator>
 #include <type_traits>
 #include <utility>
@@ -55,9 +56,10 @@ struct Has_refine<Traits, std::void_t<decltype(std::declval<const Traits&>().ref
 template <class Traits, class = void>
 struct Has_roots_for_distance : std::false_type {};
 template <class Traits>
-struct Has_roots_for_distance<Traits, std::void_t<decltype(std::declval<const Traits&>().initial_fragments(
-                                          std::declval<std::back_insert_iterator<std::vector<typename Traits::Fragment>>>(),
-                                          1.))>> : std::true_type {};
+struct Has_roots_for_distance<
+    Traits, std::void_t<decltype(std::declval<const Traits&>().initial_fragments(
+                std::declval<std::back_insert_iterator<std::vector<typename Traits::Fragment>>>(), 1.))>>
+    : std::true_type {};
 
 /// the root fragments for minimum distance d: the model's own for d if it has them
 template <class Traits, class OutputIterator>
