@@ -262,7 +262,7 @@ public:
   /// depth 40. Below it, in the maximality certificate's last levels, a parameter is off by a few
   /// 2^-53 at most, which moves a corner by less than a quarter of `position_error()`, within the
   /// margin of `is_covered()`.
-  int level(const Fragment& f) const { return int(f.level) + (f.piece == 0 ? 0 : int(f.piece >> 2 & 15)); }
+  int level(const Fragment& f) const { return int(f.level) + (f.piece == 0 ? 0 : Piece(f.piece).k); }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
   /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
@@ -445,6 +445,14 @@ private:
   {
     return std::uint32_t(kind) | std::uint32_t(k) << 2 | std::uint32_t(half) << 6 | row << 7;
   }
+  struct Piece // a piece code, decoded
+  {
+    int kind, k, half;
+    double row;
+    explicit Piece(std::uint32_t code)
+        : kind(int(code & 3)), k(int(code >> 2 & 15)), half(int(code >> 6 & 1)), row(double(code >> 7))
+    {}
+  };
   static int floor_log2(std::uint32_t n) // n >= 1
   {
 #if defined(__GNUC__) || defined(__clang__)
@@ -461,6 +469,11 @@ private:
     const double n = double(std::uint32_t(1) << k);
     return std::uint32_t((std::min)(n, (std::max)(0., std::floor(double(f.foot) * n + 0.5))));
   }
+  // the same as a fraction of the edge, m 2^-k, exactly
+  static double cap_split_fraction(const Face& f, int k)
+  {
+    return double(cap_split(f, k)) * internal::power_of_half(std::size_t(k));
+  }
 
   // the number of rows of a piece's needle, as a power of two, or -1 if the needle is empty (a cap
   // split at a corner)
@@ -476,15 +489,14 @@ private:
   // first triangle of row j, h (1 - (j + 1) h) for the second, h = 2^-rows
   CGAL_PDS_NOINLINE static double piece_share(const Face& f, std::uint32_t piece)
   {
-    const int kind = int(piece & 3), k = int(piece >> 2 & 15), half = int(piece >> 6 & 1);
-    const double j = double(piece >> 7);
+    const Piece p(piece);
     double side = 1;
-    if(kind != 1) {
-      const double t = double(cap_split(f, k)) * internal::power_of_half(std::size_t(k));
-      side = kind == 2 ? t : 1 - t;
+    if(p.kind != 1) {
+      const double t = cap_split_fraction(f, p.k);
+      side = p.kind == 2 ? t : 1 - t;
     }
-    const double h = internal::power_of_half(std::size_t(rows_log2(f, kind, k)));
-    return side * h * (1 - (j + half) * h);
+    const double h = internal::power_of_half(std::size_t(rows_log2(f, p.kind, p.k)));
+    return side * h * (1 - (p.row + p.half) * h);
   }
 
   // a cap's two needles (P, Q, R): (apex, split point, next corner) and (apex, split point, corner
@@ -500,7 +512,7 @@ private:
       R[0] = corner_u[a], R[1] = corner_v[a];
       return k;
     }
-    const double t = double(cap_split(f, k)) * internal::power_of_half(std::size_t(k));
+    const double t = cap_split_fraction(f, k);
     P[0] = corner_u[a], P[1] = corner_v[a];
     Q[0] = corner_u[b] + t * (corner_u[c] - corner_u[b]);
     Q[1] = corner_v[b] + t * (corner_v[c] - corner_v[b]);
@@ -513,10 +525,10 @@ private:
   // plus those of the rows of its needle, plus for a cap those of its split point (see level())
   CGAL_PDS_NOINLINE static Frame frame(const Face& f, std::uint32_t piece)
   {
-    const int kind = int(piece & 3), k = int(piece >> 2 & 15), half = int(piece >> 6 & 1);
-    const double j = double(piece >> 7);
+    const Piece p(piece);
+    const double j = p.row;
     double P[2], Q[2], R[2];
-    const int rows = needle(f, kind, k, P, Q, R);
+    const int rows = needle(f, p.kind, p.k, P, Q, R);
     const double h = internal::power_of_half(std::size_t(rows));
     double p0[2], p1[2], q0[2], q1[2]; // the row's corners: P and Q moved j and j + 1 rows towards R
     for(int i = 0; i < 2; ++i) {
@@ -525,7 +537,7 @@ private:
       q0[i] = Q[i] + j * h * (R[i] - Q[i]);
       q1[i] = Q[i] + (j + 1) * h * (R[i] - Q[i]);
     }
-    if(half == 0) return Frame{p0[0], p0[1], q0[0] - p0[0], q0[1] - p0[1], p1[0] - p0[0], p1[1] - p0[1]};
+    if(p.half == 0) return Frame{p0[0], p0[1], q0[0] - p0[0], q0[1] - p0[1], p1[0] - p0[0], p1[1] - p0[1]};
     return Frame{q0[0], q0[1], q1[0] - q0[0], q1[1] - q0[1], p1[0] - q0[0], p1[1] - q0[1]};
   }
 
