@@ -72,6 +72,30 @@ TEST(SphereSampling, NumberOfPoints)
   expect_maximal_poisson_disk_set(sphere, points, stats.minimum_distance);
 }
 
+// Scaled by a power of two about the origin, the sphere's computations are scaled exactly: the same
+// seed gives the same points, scaled. The union test's weights of three balls solve a 3x3 system
+// whose determinant grows as the sixth power of the size: 2^200 times larger or smaller, it left the
+// range of doubles and the union test proved fewer rectangles than at size 1 (other points, more
+// darts).
+TEST(SphereSampling, ScaledByAPowerOfTwoGivesTheSamePointsScaled)
+{
+  auto sample = [](int e) {
+    const double r = std::ldexp(1., e);
+    std::vector<Point> points;
+    PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, r * r), std::back_inserter(points),
+                       PDS::parameters::minimum_distance(0.05 * r).random_seed(5));
+    return points;
+  };
+  const std::vector<Point> unit = sample(0);
+  for(int e : {-300, -200, 200, 300}) {
+    const std::vector<Point> scaled = sample(e);
+    ASSERT_EQ(scaled.size(), unit.size()) << "sphere of radius 2^" << e;
+    for(std::size_t i = 0; i < unit.size(); ++i)
+      ASSERT_EQ(scaled[i], Point(std::ldexp(unit[i].x(), e), std::ldexp(unit[i].y(), e), std::ldexp(unit[i].z(), e)))
+          << "sample " << i << " on the sphere of radius 2^" << e;
+  }
+}
+
 // Area-uniform darts make the heights z of the samples uniform on [-R, R] (Archimedes); a biased
 // sampler (e.g. uniform in phi) would crowd the poles. Ten slabs of equal area, compared with a
 // chi-square bound far above its 9-degree-of-freedom expectation but far below what a bias gives.

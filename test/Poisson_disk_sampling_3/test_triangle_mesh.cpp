@@ -94,6 +94,33 @@ TEST(MeshSampling, SameSeedSamePointsWhateverRanBefore)
   EXPECT_NE(a, other);
 }
 
+// Scaled by a power of two, a mesh gives the same points, scaled: no step of the triangle model, its
+// union test or the engine depends on the mesh's size (within the range where squared sizes stay
+// normal doubles).
+TEST(MeshSampling, ScaledByAPowerOfTwoGivesTheSamePointsScaled)
+{
+  const Mesh unit_mesh = load_mesh("elephant.off");
+  auto sample = [&](int e) {
+    Mesh m = unit_mesh;
+    for(auto v : vertices(m)) {
+      const Point p = m.point(v);
+      m.point(v) = Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
+    }
+    std::vector<Point> points;
+    PDS::sample_triangle_mesh(m, std::back_inserter(points),
+                              PDS::parameters::minimum_distance(std::ldexp(0.02, e)).random_seed(5));
+    return points;
+  };
+  const std::vector<Point> unit = sample(0);
+  for(int e : {-300, -200, 200, 300}) {
+    const std::vector<Point> scaled = sample(e);
+    ASSERT_EQ(scaled.size(), unit.size()) << "mesh scaled by 2^" << e;
+    for(std::size_t i = 0; i < unit.size(); ++i)
+      ASSERT_EQ(scaled[i], Point(std::ldexp(unit[i].x(), e), std::ldexp(unit[i].y(), e), std::ldexp(unit[i].z(), e)))
+          << "sample " << i << " on the mesh scaled by 2^" << e;
+  }
+}
+
 TEST(MeshSampling, SurfaceMeshPolyhedronAndSoupAgree)
 {
   const Mesh sm = load_mesh("lion.off");
