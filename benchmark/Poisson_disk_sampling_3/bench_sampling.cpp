@@ -237,15 +237,21 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
   const double d = distance_for(PMP::area(m), double(state.range(0)));
   PDS::Sampling_statistics stats;
   std::size_t n = 0;
+  double peak = 0;
   for(auto _ : state) {
     n = 0;
+    const Heap_peak heap;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, boost::make_function_output_iterator([&](const auto&) { ++n; }),
                               PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     state.SetIterationTime(seconds_since(start));
+    peak = heap.bytes();
   }
   state.counters["points"] = double(n);
   state.counters["darts_per_point"] = double(stats.darts) / double(n);
+  // the sampler's own heap: the points are counted, not stored (the other cases store them)
+  state.counters["peak_heap_bytes_per_point"] = peak / double(n);
+  state.counters["memory_budget_use"] = peak / (200 * double(n) + 300 * double(num_faces(m)));
 }
 
 // The triangle model without its optional union test and refine(): the operations the concept
@@ -409,6 +415,10 @@ void register_cases()
   for(int n : {100000, 1000000})
     benchmark::RegisterBenchmark("sampling_only/lion.off", [](benchmark::State& s) { sampling_only_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  // a mesh of few faces, where the budget has almost nothing but the points: what the sampler itself
+  // holds (see benchmark/README.md, "Memory")
+  benchmark::RegisterBenchmark("sampling_only/pipe.off", [](benchmark::State& s) { sampling_only_case(s, "pipe.off"); })
+      ->Arg(10000)->Arg(100000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
     benchmark::RegisterBenchmark("union_test/lion.off", [](benchmark::State& s) { union_test_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
