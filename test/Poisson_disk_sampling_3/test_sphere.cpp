@@ -87,13 +87,7 @@ TEST(SphereSampling, ScaledByAPowerOfTwoGivesTheSamePointsScaled)
     return points;
   };
   const std::vector<Point> unit = sample(0);
-  for(int e : {-300, -200, 200, 300}) {
-    const std::vector<Point> scaled = sample(e);
-    ASSERT_EQ(scaled.size(), unit.size()) << "sphere of radius 2^" << e;
-    for(std::size_t i = 0; i < unit.size(); ++i)
-      ASSERT_EQ(scaled[i], Point(std::ldexp(unit[i].x(), e), std::ldexp(unit[i].y(), e), std::ldexp(unit[i].z(), e)))
-          << "sample " << i << " on the sphere of radius 2^" << e;
-  }
+  for(int e : {-300, -200, 200, 300}) expect_scaled_copy(unit, sample(e), e);
 }
 
 // Area-uniform darts make the heights z of the samples uniform on [-R, R] (Archimedes); a biased

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,15 @@ PolygonMesh load_mesh(const std::string& name)
 
 /// a minimum distance giving about n points on a surface of this area
 inline double distance_for(double area, double n) { return std::sqrt(0.6965 * area / n); }
+
+/// point by point, `scaled` is `unit` with every coordinate multiplied by 2^e, exactly
+inline void expect_scaled_copy(const std::vector<Point>& unit, const std::vector<Point>& scaled, int e)
+{
+  ASSERT_EQ(scaled.size(), unit.size()) << "scaled by 2^" << e;
+  for(std::size_t i = 0; i < unit.size(); ++i)
+    ASSERT_EQ(scaled[i], Point(std::ldexp(unit[i].x(), e), std::ldexp(unit[i].y(), e), std::ldexp(unit[i].z(), e)))
+        << "sample " << i << ", scaled by 2^" << e;
+}
 
 /// the two properties every output must have, decided by the package's exact validation
 template <class Surface>

@@ -112,13 +112,7 @@ TEST(MeshSampling, ScaledByAPowerOfTwoGivesTheSamePointsScaled)
     return points;
   };
   const std::vector<Point> unit = sample(0);
-  for(int e : {-300, -200, 200, 300}) {
-    const std::vector<Point> scaled = sample(e);
-    ASSERT_EQ(scaled.size(), unit.size()) << "mesh scaled by 2^" << e;
-    for(std::size_t i = 0; i < unit.size(); ++i)
-      ASSERT_EQ(scaled[i], Point(std::ldexp(unit[i].x(), e), std::ldexp(unit[i].y(), e), std::ldexp(unit[i].z(), e)))
-          << "sample " << i << " on the mesh scaled by 2^" << e;
-  }
+  for(int e : {-300, -200, 200, 300}) expect_scaled_copy(unit, sample(e), e);
 }
 
 TEST(MeshSampling, SurfaceMeshPolyhedronAndSoupAgree)
