@@ -416,7 +416,7 @@ void register_cases()
     benchmark::RegisterBenchmark("sampling_only/lion.off", [](benchmark::State& s) { sampling_only_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   // a mesh of few faces, where the budget has almost nothing but the points: what the sampler itself
-  // holds (see benchmark/README.md, "Memory")
+  // holds (see benchmark/README.md, "Where the figures are short")
   benchmark::RegisterBenchmark("sampling_only/pipe.off", [](benchmark::State& s) { sampling_only_case(s, "pipe.off"); })
       ->Arg(10000)->Arg(100000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})

@@ -14,6 +14,7 @@ namespace CGAL {
 namespace Poisson_disk_sampling_3 {
 namespace internal {
 
+// the determinant of M, expanded along its first row
 inline double determinant_3(const double (&M)[3][3])
 {
   return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
