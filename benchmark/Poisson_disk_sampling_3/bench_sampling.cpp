@@ -12,6 +12,7 @@
 #include <CGAL/Poisson_disk_sampling_3.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/point_generators_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -140,25 +141,53 @@ void mesh_case(benchmark::State& state, const std::string& name)
   state.counters["floor_ratio"] = seconds / floor;
 }
 
+// The sphere's white-noise floor: n uniform random points on it with CGAL's generator, fastest of five
+// runs as for the meshes
+double white_noise_seconds(const K::Sphere_3& sphere, std::size_t n)
+{
+  double best = 1e300;
+  for(int run = 0; run < 5; ++run) {
+    std::vector<Point> points;
+    points.reserve(n);
+    CGAL::Random rng(1);
+    const auto start = std::chrono::steady_clock::now();
+    CGAL::Random_points_on_sphere_3<Point> g(std::sqrt(sphere.squared_radius()), rng);
+    for(std::size_t i = 0; i < n; ++i, ++g) points.push_back(*g + (sphere.center() - CGAL::ORIGIN));
+    best = (std::min)(best, seconds_since(start));
+    benchmark::DoNotOptimize(points.data());
+  }
+  return best;
+}
+
 void sphere_case(benchmark::State& state)
 {
   const K::Sphere_3 sphere(CGAL::ORIGIN, 1);
   const double d = distance_for(4 * 3.14159265358979323846, double(state.range(0)));
   std::vector<Point> points;
   PDS::Sampling_statistics stats;
-  double seconds = 0;
+  double seconds = 0, peak = 0;
   for(auto _ : state) {
     points.clear();
+    points.shrink_to_fit();
+    const Heap_peak heap;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
+    peak = heap.bytes();
     state.SetIterationTime(seconds);
   }
   if(!validate(state, sphere, points, d)) return;
-  state.counters["points"] = double(points.size());
+  const double floor = white_noise_seconds(sphere, points.size());
+  const double n = double(points.size());
+  state.counters["points"] = n;
   state.counters["seconds"] = seconds;
-  state.counters["points_per_second"] = double(points.size()) / seconds;
-  state.counters["darts_per_point"] = double(stats.darts) / double(points.size());
+  state.counters["points_per_second"] = n / seconds;
+  state.counters["darts_per_point"] = double(stats.darts) / n;
+  state.counters["peak_heap_bytes_per_point"] = peak / n;
+  state.counters["memory_budget_use"] = peak / (200 * n); // no faces: 200 bytes a point
+  state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / n;
+  state.counters["floor_seconds"] = floor;
+  state.counters["floor_ratio"] = seconds / floor;
 }
 
 // number_of_points mode against the radius mode giving the same count: args: n
