@@ -19,6 +19,7 @@ namespace {
 
 typedef PDS::Sphere_fragment_traits_3 Traits;
 typedef Traits::Fragment Fragment;
+typedef Traits::Rectangle Rectangle;
 const double pi = 3.14159265358979323846;
 
 struct Case
@@ -113,12 +114,41 @@ TEST(SphereFragments, AreaIsEquationOneAndChildrenTileTheParent)
   double total = 0;
   for(const Fragment& f : roots) total += traits.area(f);
   EXPECT_NEAR(total, 4 * pi * 4, 1e-12);
-  const Fragment f{0.3, 1.1, std::cos(1.0), std::cos(0.2)}; // theta in [0.3, 1.1], phi in [0.2, 1]
-  EXPECT_NEAR(traits.area(f), 4 * (1.1 - 0.3) * (std::cos(0.2) - std::cos(1.0)), 1e-14);
-  std::vector<Fragment> children;
-  traits.split(f, std::back_inserter(children));
-  ASSERT_EQ(children.size(), 4u);
-  for(const Fragment& c : children) EXPECT_NEAR(traits.area(c), traits.area(f) / 4, 1e-14);
+  const Rectangle r{0.3, 1.1, std::cos(1.0), std::cos(0.2)}; // theta in [0.3, 1.1], phi in [0.2, 1]
+  EXPECT_NEAR(traits.area(r), 4 * (1.1 - 0.3) * (std::cos(0.2) - std::cos(1.0)), 1e-14);
+  // cells down to the deepest level: the children's bounds are their parent's and its middles, to
+  // the bit, so that they tile it; their areas are a quarter of it
+  PDS::internal::Random rng(3);
+  for(int trial = 0; trial < 200; ++trial) {
+    Fragment f = roots[rng.uniform_index(8)];
+    while(traits.level(f) < Traits::max_level) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      ASSERT_EQ(children.size(), 4u);
+      const Rectangle p = Traits::rectangle(f);
+      const Rectangle c[4] = {Traits::rectangle(children[0]), Traits::rectangle(children[1]),
+                              Traits::rectangle(children[2]), Traits::rectangle(children[3])};
+      for(int k = 0; k < 4; ++k) {
+        EXPECT_EQ(traits.level(children[k]), traits.level(f) + 1);
+        EXPECT_EQ(c[k].theta0, k % 2 ? c[0].theta1 : p.theta0);
+        EXPECT_EQ(c[k].theta1, k % 2 ? p.theta1 : c[1].theta0);
+        EXPECT_EQ(c[k].z0, k / 2 ? c[0].z1 : p.z0);
+        EXPECT_EQ(c[k].z1, k / 2 ? p.z1 : c[2].z0);
+        // heights exactly (to level 52), longitudes within the rounding of their bounds
+        if(traits.level(f) < 52) EXPECT_EQ(c[k].z1 - c[k].z0, 0.5 * (p.z1 - p.z0));
+        EXPECT_NEAR(c[k].theta1 - c[k].theta0, 0.5 * (p.theta1 - p.theta0), 0x1p-48);
+        if(traits.level(f) < 8) EXPECT_NEAR(traits.area(children[k]), traits.area(f) / 4, 1e-13 * traits.area(f));
+      }
+      if(traits.level(f) < 40) { // the engine's deepest level: cells are still far wider than a rounding
+        EXPECT_LT(p.theta0, c[0].theta1);
+        EXPECT_LT(c[1].theta0, p.theta1);
+      }
+      f = children[rng.uniform_index(4)];
+    }
+  }
+  const Rectangle last = Traits::rectangle(Fragment{3, 1, 0});
+  EXPECT_EQ(last.theta1, 2 * pi);
+  EXPECT_EQ(last.z1, 1.);
 }
 
 // Near the pole, an edge at constant phi is a small circle around the pole. Seen from a ball centred
@@ -128,7 +158,7 @@ TEST(SphereFragments, CoverageIsRightNearThePoleWhereTheCornerTestFails)
 {
   const Traits traits({{0, 0, 0}}, 1);
   const double phi0 = 0.05, phi1 = 0.3;
-  const Fragment f{0, 2.0, std::cos(phi1), std::cos(phi0)}; // a wide band near the north pole
+  const Rectangle f{0, 2.0, std::cos(phi1), std::cos(phi0)}; // a wide band near the north pole
   // the ball: centred on the sphere at phi = 0.1 across the pole (theta = 1 + pi), with a radius
   // that just holds the four corners
   const double pc = 0.1, tc = 1 + 3.14159265358979323846;
@@ -165,7 +195,7 @@ TEST(SphereFragments, CoverageMatchesDenseEvaluation)
   for(int trial = 0; trial < 2000; ++trial) {
     const double t0 = rng.uniform() * 2 * pi, t1 = t0 + rng.uniform() * (2 * pi - t0);
     const double za = 2 * rng.uniform() - 1, zb = 2 * rng.uniform() - 1;
-    const Fragment f{t0, t1, std::min(za, zb), std::max(za, zb)};
+    const Rectangle f{t0, t1, std::min(za, zb), std::max(za, zb)};
     const double tc = rng.uniform() * 2 * pi, zc = 2 * rng.uniform() - 1, rc = std::sqrt(1 - zc * zc);
     const Traits::Point c{{0.5 + 1.5 * rc * std::cos(tc), -1 + 1.5 * rc * std::sin(tc), 2 + 1.5 * zc}};
     double worst = 0;
@@ -187,7 +217,7 @@ TEST(SphereFragments, CoverageMatchesDenseEvaluation)
 // The largest distance from a point of the rectangle to the nearest centre, over a grid of
 // (grid + 1)^2 points in (theta, z) and (edge + 1) points along each edge: a lower bound of the
 // covering radius, which a finer grid brings closer.
-double farthest_on_grid(const Traits& traits, const Fragment& f, const std::vector<Traits::Point>& centers,
+double farthest_on_grid(const Traits& traits, const Rectangle& f, const std::vector<Traits::Point>& centers,
                         int grid, int edge)
 {
   const Traits::Point c = traits.center();
@@ -213,7 +243,7 @@ double farthest_on_grid(const Traits& traits, const Fragment& f, const std::vect
 }
 
 // A claim of coverage, checked on a fine grid and densely along the edges.
-void expect_claim_holds(const Traits& traits, const Fragment& f, const std::vector<Traits::Point>& centers,
+void expect_claim_holds(const Traits& traits, const Rectangle& f, const std::vector<Traits::Point>& centers,
                         double radius, int trial)
 {
   const double fine = farthest_on_grid(traits, f, centers, 150, 3000);
@@ -221,7 +251,7 @@ void expect_claim_holds(const Traits& traits, const Fragment& f, const std::vect
                           << " radii from the nearest centre";
 }
 
-bool covered_by_one(const Traits& traits, const Fragment& f, const std::vector<Traits::Point>& centers, double radius)
+bool covered_by_one(const Traits& traits, const Rectangle& f, const std::vector<Traits::Point>& centers, double radius)
 {
   for(const Traits::Point& q : centers)
     if(traits.is_covered(f, q, radius)) return true;
@@ -255,7 +285,7 @@ TEST(SphereFragments, UnionCoverageIsSoundNearTheEdgeOfCoverage)
     const double phi1 = std::min(pi, phi0 + s);
     const double width = std::min(pi / 2, s * (0.5 + 1.5 * rng.uniform()) / std::max(std::sin(phi0 + 0.5 * s), s));
     const double t0 = rng.uniform() * (2 * pi - width);
-    const Fragment f{t0, t0 + width, std::cos(phi1), std::cos(phi0)};
+    const Rectangle f{t0, t0 + width, std::cos(phi1), std::cos(phi0)};
 
     // centres around the rectangle: in its parameter box grown by half its size on each side, or,
     // for a rectangle at a pole, anywhere around the pole (where a ball across the pole holds the
@@ -323,8 +353,10 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
   traits.initial_fragments(std::back_inserter(octants));
   for(int trial = 0; trial < trials; ++trial) {
     // a rectangle of the engine's subdivision, level 5 to 9: about D to D / 16 across
-    const Fragment f = random_descendant(traits, octants[rng.uniform_index(8)], 5 + int(rng.uniform_index(5)), rng);
-    const Traits::Point m = traits.reference_point(f);
+    const Fragment cell =
+        random_descendant(traits, octants[rng.uniform_index(8)], 5 + int(rng.uniform_index(5)), rng);
+    const Rectangle f = Traits::rectangle(cell);
+    const Traits::Point m = traits.reference_point(cell);
     double reach = 0;
     for(double theta : {f.theta0, f.theta1})
       for(double z : {f.z0, f.z1}) {
@@ -336,7 +368,8 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
       if(std::hypot(p.x() - m[0], p.y() - m[1], p.z() - m[2]) < 2 * d + reach)
         centers.push_back({{p.x(), p.y(), p.z()}});
     const double radius = d * (rng.uniform() < 0.5 ? 1. : 0.9 + 0.1 * rng.uniform());
-    const bool yes = traits.is_covered_by_union(f, centers, radius);
+    const bool yes = traits.is_covered_by_union(cell, centers, radius);
+    EXPECT_EQ(yes, traits.is_covered_by_union(f, centers, radius));
     if(yes) {
       ++proven;
       expect_claim_holds(traits, f, centers, radius, trial);
@@ -376,9 +409,7 @@ TEST(SphereFragments, RefineAgreesWithTheOperationsItReplaces)
       if(dist < d) near.push_back({{p.x(), p.y(), p.z()}});
     }
     const double radius = d * (rng.uniform() < 0.5 ? 1. : 0.9 + 0.2 * rng.uniform());
-    auto same = [](const Fragment& a, const Fragment& b) {
-      return a.theta0 == b.theta0 && a.theta1 == b.theta1 && a.z0 == b.z0 && a.z1 == b.z1;
-    };
+    auto same = [](const Fragment& a, const Fragment& b) { return a.i == b.i && a.j == b.j && a.level == b.level; };
     expect_refine_agrees(traits, f, near, around, radius, same, counts, trial);
   }
   expect_every_branch_taken(counts);

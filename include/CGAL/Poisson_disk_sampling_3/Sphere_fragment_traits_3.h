@@ -5,12 +5,16 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_SPHERE_FRAGMENT_TRAITS_3_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/weights_of_three.h>
+
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -22,10 +26,15 @@ namespace Poisson_disk_sampling_3 {
 ///
 /// The sphere (paper Section 5.1). Fragments are spherical rectangles [theta0, theta1] x [z0, z1] in
 /// longitude theta and height z = cos(phi) above the centre: the paper's rectangles in (theta, phi),
-/// stored by the cosines of their polar angles. The area is the paper's Equation 1,
+/// bounded by the cosines of their polar angles. The area is the paper's Equation 1,
 /// R^2 (theta1 - theta0)(cos phi0 - cos phi1), and a uniform point is the paper's inverse CDF:
 /// theta uniform, cos(phi) uniform. Children split both ranges at their middle, so the four children
 /// have equal areas.
+///
+/// The rectangles are the cells of a quadtree over the eight octants, and a fragment stores a cell
+/// by its level and its two indices (16 bytes; four bounds and a depth would take 40 in the engine's
+/// pool of active fragments). `rectangle()` computes its bounds, each from its own index, so that
+/// neighbouring cells share their bounds to the bit and the children of a cell tile it exactly.
 ///
 /// Coverage: the paper tests the four corners of a rectangle against the ball, which fails near the
 /// poles, where the edges of constant phi are not great circles and bulge out of the ball between two
@@ -41,14 +50,26 @@ public:
   /// a point, as the engine computes with it
   typedef std::array<double, 3> Point;
 
-  /// a spherical rectangle
-  struct Fragment
+  /// a spherical rectangle, by its bounds
+  struct Rectangle
   {
     double theta0;  ///< smallest longitude, in [0, 2 pi]
     double theta1;  ///< largest longitude, in [0, 2 pi]
     double z0;      ///< smallest height cos(phi), in [-1, 1]
     double z1;      ///< largest height cos(phi), in [-1, 1]
   };
+
+  /// a cell of the quadtree: the rectangle [i, i + 1] x pi / 2^(level + 1) in longitude by
+  /// [j, j + 1] / 2^level - 1 in height (see `rectangle()`)
+  struct Fragment
+  {
+    std::uint64_t i;             ///< index in longitude, below 2^(level + 2)
+    std::uint64_t j : 58;        ///< index in height, below 2^(level + 1)
+    std::uint64_t level : 6;     ///< number of splits from an octant, at most `max_level`
+  };
+
+  /// the deepest level of a fragment: `split()` requires a shallower one (the engine stops at 40)
+  static constexpr int max_level = 56;
 
   /// a sample
   struct Sample
@@ -82,24 +103,36 @@ public:
   /// \name Operations of SurfaceFragmentTraits_3
   /// @{
 
-  /// the eight octants
+  /// the eight octants: the cells of level 0
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out) const
   {
-    const double q = 0.5 * pi();
-    for(int i = 0; i < 4; ++i)
-      for(int j = 0; j < 2; ++j)
-        *out++ = Fragment{i * q, i == 3 ? 2 * pi() : (i + 1) * q, j - 1., double(j)};
+    for(std::uint64_t i = 0; i < 4; ++i)
+      for(std::uint64_t j = 0; j < 2; ++j) *out++ = Fragment{i, j, 0};
     return out;
   }
 
+  /// the bounds of a cell: theta_k = k (pi / 2) / 2^level and z_k = k / 2^level - 1, each rounded
+  /// once (z exactly up to level 52), so that a bound does not depend on the cell it is computed for
+  static Rectangle rectangle(const Fragment& f)
+  {
+    const double w = internal::power_of_half(f.level), tw = quarter_turn() * w;
+    return Rectangle{double(f.i) * tw, double(f.i + 1) * tw, double(f.j) * w - 1, double(f.j + 1) * w - 1};
+  }
+
+  /// Optional operation of `SurfaceFragmentTraits_3`: the number of splits from an octant
+  int level(const Fragment& f) const { return int(f.level); }
+
   /// paper Equation 1
-  double area(const Fragment& f) const { return r_ * r_ * (f.theta1 - f.theta0) * (f.z1 - f.z0); }
+  double area(const Fragment& f) const { return area(rectangle(f)); }
+  /// paper Equation 1, for any rectangle
+  double area(const Rectangle& f) const { return r_ * r_ * (f.theta1 - f.theta0) * (f.z1 - f.z0); }
 
   /// the paper's inverse CDF: theta and cos(phi) uniform; never refused
   template <class RandomGenerator>
-  std::optional<Sample> random_sample(const Fragment& f, RandomGenerator& rng) const
+  std::optional<Sample> random_sample(const Fragment& fragment, RandomGenerator& rng) const
   {
+    const Rectangle f = rectangle(fragment);
     const double theta = f.theta0 + rng.uniform() * (f.theta1 - f.theta0);
     const double z = f.z0 + rng.uniform() * (f.z1 - f.z0);
     return Sample{at(theta, z)};
@@ -109,11 +142,21 @@ public:
   const Point& point(const Sample& s) const { return s.point; }
 
   /// the point at the middle of the parameter ranges
-  Point reference_point(const Fragment& f) const { return at(0.5 * (f.theta0 + f.theta1), 0.5 * (f.z0 + f.z1)); }
+  Point reference_point(const Fragment& fragment) const
+  {
+    const Rectangle f = rectangle(fragment);
+    return at(0.5 * (f.theta0 + f.theta1), 0.5 * (f.z0 + f.z1));
+  }
 
   /// true only if every point of the rectangle is within `radius` of `center`, with a margin larger
   /// than the rounding error
   bool is_covered(const Fragment& f, const Point& center, double radius) const
+  {
+    return is_covered(rectangle(f), center, radius);
+  }
+
+  /// the same for any rectangle with theta1 - theta0 in [0, 2 pi] and -1 <= z0 <= z1 <= 1
+  bool is_covered(const Rectangle& f, const Point& center, double radius) const
   {
     const Ball b = ball(center, radius);
     return min_dot(f, b, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1), std::sin(f.theta1)) >= b.threshold;
@@ -153,6 +196,13 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
   {
+    return is_covered_by_union(rectangle(f), centers, radius);
+  }
+
+  /// the same for any rectangle with theta1 - theta0 in [0, pi] and -1 <= z0 <= z1 <= 1
+  template <class PointRange>
+  bool is_covered_by_union(const Rectangle& f, const PointRange& centers, double radius) const
+  {
     return is_covered_by_union(f, centers, radius, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1),
                                std::sin(f.theta1));
   }
@@ -164,10 +214,14 @@ public:
   /// otherwise writes the children of `f` that neither one point of `near` nor the union of the balls
   /// around `around` covers.
   template <class PointRange, class OutputIterator>
-  bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
+  bool refine(const Fragment& fragment, const PointRange& near, const PointRange& around, double radius,
               OutputIterator children) const
   {
-    const double tm = 0.5 * (f.theta0 + f.theta1), zm = 0.5 * (f.z0 + f.z1);
+    CGAL_precondition(int(fragment.level) < max_level);
+    const Rectangle f = rectangle(fragment);
+    const Fragment cell[4] = {child(fragment, 0), child(fragment, 1), child(fragment, 2), child(fragment, 3)};
+    // the middles, as rectangle() computes them for the children
+    const double tm = rectangle(cell[3]).theta0, zm = rectangle(cell[3]).z0;
     const double cs[3] = {std::cos(f.theta0), std::cos(tm), std::cos(f.theta1)};
     const double sn[3] = {std::sin(f.theta0), std::sin(tm), std::sin(f.theta1)};
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
@@ -179,21 +233,21 @@ public:
       balls[n++] = ball(c, radius);
     }
     // whether one ball covers g, whose longitudes are number i0 and i1
-    auto covered_by_one = [&](const Fragment& g, int i0, int i1) {
+    auto covered_by_one = [&](const Rectangle& g, int i0, int i1) {
       for(std::size_t i = 0; i < n; ++i)
         if(min_dot(g, balls[i], cs[i0], sn[i0], cs[i1], sn[i1]) >= balls[i].threshold) return true;
       return false;
     };
     if(covered_by_one(f, 0, 2)) return true;
     // as split() makes them
-    const Fragment child[4] = {{f.theta0, tm, f.z0, zm}, {tm, f.theta1, f.z0, zm}, {f.theta0, tm, zm, f.z1},
-                               {tm, f.theta1, zm, f.z1}};
+    const Rectangle quarter[4] = {{f.theta0, tm, f.z0, zm}, {tm, f.theta1, f.z0, zm}, {f.theta0, tm, zm, f.z1},
+                                  {tm, f.theta1, zm, f.z1}};
     for(int c = 0; c < 4; ++c) {
       const int i0 = c % 2, i1 = i0 + 1;
-      const Fragment& g = child[c];
+      const Rectangle& g = quarter[c];
       if(area(g) > 0 && !covered_by_one(g, i0, i1) &&
          !is_covered_by_union(g, around, radius, cs[i0], sn[i0], cs[i1], sn[i1]))
-        *children++ = g;
+        *children++ = cell[c];
     }
     return false;
   }
@@ -201,7 +255,7 @@ public:
 private:
   // is_covered_by_union(), given the cosines and sines of f's longitudes
   template <class PointRange>
-  bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius, double cos0, double sin0,
+  bool is_covered_by_union(const Rectangle& f, const PointRange& centers, double radius, double cos0, double sin0,
                            double cos1, double sin1) const
   {
     const double rad2 = radius * radius, base = r_ * r_ - rad2;
@@ -376,7 +430,7 @@ private:
 
 public:
   /// the paper's test, kept to show where it fails: true if the four corners are in the ball
-  bool are_corners_covered(const Fragment& f, const Point& center, double radius) const
+  bool are_corners_covered(const Rectangle& f, const Point& center, double radius) const
   {
     for(double theta : {f.theta0, f.theta1})
       for(double z : {f.z0, f.z1}) {
@@ -387,15 +441,13 @@ public:
     return true;
   }
 
-  /// the four children: both ranges split at their middle
+  /// the four children: both ranges split at their middle, the lower longitudes and heights first;
+  /// precondition: `level(f) < max_level`
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator out) const
   {
-    const double tm = 0.5 * (f.theta0 + f.theta1), zm = 0.5 * (f.z0 + f.z1);
-    *out++ = Fragment{f.theta0, tm, f.z0, zm};
-    *out++ = Fragment{tm, f.theta1, f.z0, zm};
-    *out++ = Fragment{f.theta0, tm, zm, f.z1};
-    *out++ = Fragment{tm, f.theta1, zm, f.z1};
+    CGAL_precondition(int(f.level) < max_level);
+    for(int c = 0; c < 4; ++c) *out++ = child(f, c);
     return out;
   }
 
@@ -407,6 +459,13 @@ private:
   static constexpr int proxies = 8;                    // corners and middles of edges
 
   static double pi() { return 3.14159265358979323846; }
+  static double quarter_turn() { return 0.5 * pi(); }
+
+  // child c of f: c % 2 selects the upper half in longitude, c / 2 in height
+  static Fragment child(const Fragment& f, int c)
+  {
+    return Fragment{2 * f.i + std::uint64_t(c % 2), 2 * f.j + std::uint64_t(c / 2), f.level + 1u};
+  }
 
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
   static double squared_length(const Point& a) { return dot(a, a); }
@@ -429,7 +488,7 @@ private:
   // wx cos theta + wy sin theta on [theta0, theta1]. In phi, g = m sin phi + wz cos phi is a sinusoid:
   // its minimum on an interval is at an end, or at its trough when the trough is inside.
   // Given the cosines and sines of theta0 and theta1.
-  static double min_dot(const Fragment& f, const Point& w, double cos0, double sin0, double cos1, double sin1)
+  static double min_dot(const Rectangle& f, const Point& w, double cos0, double sin0, double cos1, double sin1)
   {
     Ball b;
     b.w = w;
@@ -459,7 +518,7 @@ private:
     return b;
   }
 
-  static double min_dot(const Fragment& f, const Ball& b, double cos0, double sin0, double cos1, double sin1)
+  static double min_dot(const Rectangle& f, const Ball& b, double cos0, double sin0, double cos1, double sin1)
   {
     const Point& w = b.w;
     double m = (std::min)(w[0] * cos0 + w[1] * sin0, w[0] * cos1 + w[1] * sin1);
