@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <set>
 #include <vector>
@@ -632,6 +633,44 @@ TEST(CellHashTable, GridCellIsTheFloor)
   }
   EXPECT_THROW(grid_cell(0x1.0p62, 1.), PDS::Invalid_input);
   EXPECT_THROW(grid_cell(std::nan(""), 1.), PDS::Invalid_input);
+}
+
+// The table against std::map, with cells near one another, then cells 2^31 and more apart on an axis
+// (whose coordinates relative to the first cell agree in their low 32 bits with cells already in),
+// inserted while the table grows.
+TEST(CellHashTable, FindsWhatWasInsertedNearAndFar)
+{
+  using PDS::internal::Cell_hash_table;
+  typedef std::array<std::int64_t, 3> C;
+  Random rng(41);
+  for(int far_from = 0; far_from < 2; ++far_from) {
+    Cell_hash_table table;
+    std::map<C, std::uint32_t> reference;
+    auto random_cell = [&](bool far) {
+      C c;
+      for(std::int64_t& x : c) x = -3 + std::int64_t(rng.uniform_index(7));
+      if(far) c[rng.uniform_index(3)] += (std::int64_t(1) << (31 + rng.uniform_index(31))) * (rng.uniform() < 0.5 ? 1 : -1);
+      return c;
+    };
+    for(int i = 0; i < 3000; ++i) {
+      // the first half near the origin; the second half far or near, after the first far one
+      const C c = random_cell(i >= 1500 && (far_from || i == 1500 || rng.uniform() < 0.5));
+      const std::uint32_t value = std::uint32_t(reference.size());
+      const std::uint32_t got = table.find_or_insert(c[0], c[1], c[2], value);
+      const auto it = reference.emplace(c, value).first;
+      ASSERT_EQ(got, it->second) << i;
+      const C q = random_cell(rng.uniform() < 0.5);
+      const auto r = reference.find(q);
+      ASSERT_EQ(table.find(q[0], q[1], q[2]), r == reference.end() ? Cell_hash_table::none : r->second) << i;
+      // a cell that agrees with c in the low 32 bits of each coordinate
+      const std::int64_t shift = std::int64_t(1) << 32;
+      const C alias{{c[0] + shift, c[1], c[2] - shift}};
+      const auto a = reference.find(alias);
+      ASSERT_EQ(table.find(alias[0], alias[1], alias[2]), a == reference.end() ? Cell_hash_table::none : a->second);
+    }
+    EXPECT_EQ(table.size(), reference.size());
+    for(const auto& [c, value] : reference) EXPECT_EQ(table.find(c[0], c[1], c[2]), value);
+  }
 }
 
 // Every sample within reach of a point is in that point's bucket, whatever the cell size.

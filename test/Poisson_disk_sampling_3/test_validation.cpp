@@ -62,6 +62,27 @@ TEST(IsPoissonDiskSet, NamesTheOffendingPair)
   EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{points[3], points[3]}, 1e-300), PDS::Invalid_input);
 }
 
+// Two clusters of points more than 2^31 cells of the check's grid apart: the pair too close in the
+// far one is found, and its points are not mistaken for the near one's.
+TEST(IsPoissonDiskSet, ClustersBillionsOfCellsApart)
+{
+  const double d = 1;
+  const Point far(std::ldexp(d, 40), -std::ldexp(d, 41), std::ldexp(d, 39));
+  std::vector<Point> points;
+  for(int i = 0; i < 10; ++i)
+    for(int j = 0; j < 10; ++j) {
+      points.emplace_back(1.5 * i, 1.5 * j, 0);
+      // the far cluster: its cells lie more than 2^31 cells from the near one's
+      points.emplace_back(far.x() + 1.5 * i, far.y() + 1.5 * j, far.z() + 0.7);
+    }
+  EXPECT_TRUE(PDS::is_poisson_disk_set(points, d));
+  points.emplace_back(far.x() + 1.5 * 4 + 0.5, far.y() + 1.5 * 7, far.z() + 0.7 + 0.5);
+  const PDS::Poisson_disk_check c = PDS::is_poisson_disk_set(points, d);
+  ASSERT_FALSE(c);
+  EXPECT_EQ(c.first, std::size_t(2 * (4 * 10 + 7) + 1));
+  EXPECT_EQ(c.second, points.size() - 1);
+}
+
 TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)
 {
   const Mesh m = load_mesh("elephant.off");

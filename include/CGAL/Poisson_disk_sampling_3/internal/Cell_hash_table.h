@@ -35,6 +35,13 @@ inline double widened_reach(double reach, double c) { return reach * (1 + 1e-9) 
 
 /// A map from the integer coordinates of a grid cell to a 32-bit value, by open addressing. Sparse:
 /// memory is O(cells used), which for points on a surface is a vanishing part of the bounding box.
+///
+/// A slot takes 16 bytes: it keeps the low 32 bits of the cell's coordinates minus those of the first
+/// cell inserted (the origin), which identify the cell as long as every cell inserted lies within
+/// 2^31 cells of the origin on each axis; a lookup outside that window then finds nothing without
+/// probing. The first insertion outside the window makes the table keep the full coordinates of each
+/// slot beside it as well (24 bytes more a slot), and compare them too. (Full coordinates in every
+/// slot, 32 bytes, made the table twice as large, and the sampler 5% slower at one million points.)
 class Cell_hash_table
 {
 public:
@@ -59,11 +66,14 @@ public:
   /// the value of a cell, `none` if it has none
   std::uint32_t find(std::int64_t x, std::int64_t y, std::int64_t z) const
   {
+    const Cell c{x, y, z};
+    if(wide_.empty() && !in_window(c)) return none;
+    const Slot key = key_of(c);
     const std::size_t mask = slots_.size() - 1;
     for(std::size_t k = hash(x, y, z) & mask;; k = (k + 1) & mask) {
       const Slot& s = slots_[k];
       if(s.value == none) return none;
-      if(s.x == x && s.y == y && s.z == z) return s.value;
+      if(s.x == key.x && s.y == key.y && s.z == key.z && (wide_.empty() || wide_[k] == c)) return s.value;
     }
   }
 
@@ -71,28 +81,70 @@ public:
   /// stays valid until the next call of this function
   std::uint32_t& find_or_insert(std::int64_t x, std::int64_t y, std::int64_t z, std::uint32_t value_if_new)
   {
+    const Cell c{x, y, z};
+    if(used_ == 0) origin_ = c;
     if(2 * (used_ + 1) > slots_.size()) grow();
+    if(wide_.empty() && !in_window(c)) widen();
+    const Slot key = key_of(c);
     const std::size_t mask = slots_.size() - 1;
     for(std::size_t k = hash(x, y, z) & mask;; k = (k + 1) & mask) {
       Slot& s = slots_[k];
       if(s.value == none) {
-        s.x = x;
-        s.y = y;
-        s.z = z;
+        s = key;
         s.value = value_if_new;
+        if(!wide_.empty()) wide_[k] = c;
         ++used_;
         return s.value;
       }
-      if(s.x == x && s.y == y && s.z == z) return s.value;
+      if(s.x == key.x && s.y == key.y && s.z == key.z && (wide_.empty() || wide_[k] == c)) return s.value;
     }
   }
 
 private:
+  struct Cell
+  {
+    std::int64_t x, y, z;
+    bool operator==(const Cell& o) const { return x == o.x && y == o.y && z == o.z; }
+  };
+
   struct Slot
   {
-    std::int64_t x = 0, y = 0, z = 0;
+    std::uint32_t x = 0, y = 0, z = 0; // the low bits of the cell minus the origin
     std::uint32_t value = none;
   };
+
+  // the difference of two coordinates below 2^62 in magnitude fits in 64 bits; modulo 2^32
+  static std::uint32_t low_bits(std::int64_t a, std::int64_t o) { return std::uint32_t(std::uint64_t(a - o)); }
+  static bool in_window(std::int64_t a, std::int64_t o)
+  {
+    const std::int64_t d = a - o;
+    return d >= -(std::int64_t(1) << 31) && d < (std::int64_t(1) << 31);
+  }
+  bool in_window(const Cell& c) const
+  {
+    return in_window(c.x, origin_.x) && in_window(c.y, origin_.y) && in_window(c.z, origin_.z);
+  }
+  Slot key_of(const Cell& c) const
+  {
+    Slot s;
+    s.x = low_bits(c.x, origin_.x);
+    s.y = low_bits(c.y, origin_.y);
+    s.z = low_bits(c.z, origin_.z);
+    return s;
+  }
+  // the cell of a slot, while all lie in the window
+  Cell cell_in_window(const Slot& s) const
+  {
+    return Cell{origin_.x + std::int32_t(s.x), origin_.y + std::int32_t(s.y), origin_.z + std::int32_t(s.z)};
+  }
+
+  // from now on, the full coordinates of each slot are kept beside it
+  void widen()
+  {
+    wide_.assign(slots_.size(), Cell{0, 0, 0});
+    for(std::size_t k = 0; k < slots_.size(); ++k)
+      if(slots_[k].value != none) wide_[k] = cell_in_window(slots_[k]);
+  }
 
   static std::size_t hash(std::int64_t x, std::int64_t y, std::int64_t z)
   {
@@ -108,16 +160,23 @@ private:
   {
     std::vector<Slot> old(2 * slots_.size());
     old.swap(slots_);
+    std::vector<Cell> old_wide(wide_.empty() ? 0 : slots_.size(), Cell{0, 0, 0});
+    old_wide.swap(wide_);
     const std::size_t mask = slots_.size() - 1;
-    for(const Slot& s : old) {
+    for(std::size_t i = 0; i < old.size(); ++i) {
+      const Slot& s = old[i];
       if(s.value == none) continue;
-      std::size_t k = hash(s.x, s.y, s.z) & mask;
+      const Cell c = old_wide.empty() ? cell_in_window(s) : old_wide[i];
+      std::size_t k = hash(c.x, c.y, c.z) & mask;
       while(slots_[k].value != none) k = (k + 1) & mask;
       slots_[k] = s;
+      if(!wide_.empty()) wide_[k] = c;
     }
   }
 
   std::vector<Slot> slots_;
+  std::vector<Cell> wide_; // empty while every cell lies in the window; then the cell of each slot
+  Cell origin_{0, 0, 0};   // the first cell inserted
   std::size_t used_ = 0;
 };
 
