@@ -116,39 +116,94 @@ TEST(SphereFragments, AreaIsEquationOneAndChildrenTileTheParent)
   EXPECT_NEAR(total, 4 * pi * 4, 1e-12);
   const Rectangle r{0.3, 1.1, std::cos(1.0), std::cos(0.2)}; // theta in [0.3, 1.1], phi in [0.2, 1]
   EXPECT_NEAR(traits.area(r), 4 * (1.1 - 0.3) * (std::cos(0.2) - std::cos(1.0)), 1e-14);
-  // cells down to the deepest level: the children's bounds are their parent's and its middles, to
-  // the bit, so that they tile it; their areas are a quarter of it
+  // cells down to the deepest level: the two children's bounds are their parent's and its middle, to
+  // the bit, so that they tile it; their areas are half of it
   PDS::internal::Random rng(3);
-  for(int trial = 0; trial < 200; ++trial) {
+  int across_theta = 0, across_z = 0;
+  for(int trial = 0; trial < 400; ++trial) {
     Fragment f = roots[rng.uniform_index(8)];
     while(traits.level(f) < Traits::max_level) {
       std::vector<Fragment> children;
       traits.split(f, std::back_inserter(children));
-      ASSERT_EQ(children.size(), 4u);
-      const Rectangle p = Traits::rectangle(f);
-      const Rectangle c[4] = {Traits::rectangle(children[0]), Traits::rectangle(children[1]),
-                              Traits::rectangle(children[2]), Traits::rectangle(children[3])};
-      for(int k = 0; k < 4; ++k) {
-        EXPECT_EQ(traits.level(children[k]), traits.level(f) + 1);
-        EXPECT_EQ(c[k].theta0, k % 2 ? c[0].theta1 : p.theta0);
-        EXPECT_EQ(c[k].theta1, k % 2 ? p.theta1 : c[1].theta0);
-        EXPECT_EQ(c[k].z0, k / 2 ? c[0].z1 : p.z0);
-        EXPECT_EQ(c[k].z1, k / 2 ? p.z1 : c[2].z0);
-        // heights exactly (to level 52), longitudes within the rounding of their bounds
-        if(traits.level(f) < 52) EXPECT_EQ(c[k].z1 - c[k].z0, 0.5 * (p.z1 - p.z0));
-        EXPECT_NEAR(c[k].theta1 - c[k].theta0, 0.5 * (p.theta1 - p.theta0), 0x1p-48);
-        if(traits.level(f) < 8) EXPECT_NEAR(traits.area(children[k]), traits.area(f) / 4, 1e-13 * traits.area(f));
+      ASSERT_EQ(children.size(), 2u);
+      const Rectangle p = Traits::rectangle(f), c0 = Traits::rectangle(children[0]),
+                      c1 = Traits::rectangle(children[1]);
+      const bool theta = traits.halves_longitudes(p);
+      (theta ? across_theta : across_z) += 1;
+      if(theta) {
+        EXPECT_EQ(c0.theta0, p.theta0);
+        EXPECT_EQ(c1.theta1, p.theta1);
+        EXPECT_EQ(c0.theta1, c1.theta0);
+        for(const Rectangle& c : {c0, c1}) {
+          EXPECT_EQ(c.z0, p.z0);
+          EXPECT_EQ(c.z1, p.z1);
+          EXPECT_NEAR(c.theta1 - c.theta0, 0.5 * (p.theta1 - p.theta0), 0x1p-48); // within their rounding
+        }
+      } else {
+        EXPECT_EQ(c0.z0, p.z0);
+        EXPECT_EQ(c1.z1, p.z1);
+        EXPECT_EQ(c0.z1, c1.z0);
+        for(const Rectangle& c : {c0, c1}) {
+          EXPECT_EQ(c.theta0, p.theta0);
+          EXPECT_EQ(c.theta1, p.theta1);
+          EXPECT_EQ(c.z1 - c.z0, 0.5 * (p.z1 - p.z0)); // exactly
+        }
+      }
+      for(const Fragment& c : children) {
+        EXPECT_GE(traits.level(c), traits.level(f));
+        EXPECT_LE(traits.level(c), traits.level(f) + 1);
+        if(traits.level(f) < 8) EXPECT_NEAR(traits.area(c), traits.area(f) / 2, 1e-13 * traits.area(f));
       }
       if(traits.level(f) < 40) { // the engine's deepest level: cells are still far wider than a rounding
-        EXPECT_LT(p.theta0, c[0].theta1);
-        EXPECT_LT(c[1].theta0, p.theta1);
+        EXPECT_LT(theta ? p.theta0 : p.z0, theta ? c0.theta1 : c0.z1);
+        EXPECT_LT(theta ? c1.theta0 : c1.z0, theta ? p.theta1 : p.z1);
       }
-      f = children[rng.uniform_index(4)];
+      f = children[rng.uniform_index(2)];
     }
   }
-  const Rectangle last = Traits::rectangle(Fragment{3, 1, 0});
+  EXPECT_GT(across_theta, 1000);
+  EXPECT_GT(across_z, 1000);
+  const Rectangle last = Traits::rectangle(Fragment{3, 1, 0, 0});
   EXPECT_EQ(last.theta1, 2 * pi);
   EXPECT_EQ(last.z1, 1.);
+}
+
+// Cells stay about as wide as they are long on the sphere, near the poles too, where halving both
+// ranges at every split makes slivers (pi / 2) rho^2 as wide as long: the wider edge of constant
+// height against the chord between the two heights, on random chains of splits towards any point.
+TEST(SphereFragments, CellsStayAboutAsWideAsLong)
+{
+  const Traits traits({{0, 0, 0}}, 1);
+  std::vector<Fragment> roots;
+  traits.initial_fragments(std::back_inserter(roots));
+  PDS::internal::Random rng(4);
+  double worst = 0;
+  int near_pole = 0;
+  for(int trial = 0; trial < 2000; ++trial) {
+    Fragment f = roots[rng.uniform_index(8)];
+    // towards a pole in a third of the chains: always the child nearer to it
+    const int towards_pole = trial % 3 == 0 ? 1 : 0;
+    while(traits.level(f) < 30) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      const bool upper_hemisphere = Traits::rectangle(f).z0 >= 0;
+      const bool across_z = !traits.halves_longitudes(Traits::rectangle(f));
+      f = children[towards_pole && across_z ? (upper_hemisphere ? 1 : 0) : rng.uniform_index(2)];
+      if(traits.level(f) < 4) continue;
+      const Rectangle r = Traits::rectangle(f);
+      const double rho0 = std::sqrt(std::max(0., 1 - r.z0 * r.z0)), rho1 = std::sqrt(std::max(0., 1 - r.z1 * r.z1));
+      const double width = std::max(rho0, rho1) * (r.theta1 - r.theta0);
+      const double length = std::hypot(rho0 - rho1, r.z1 - r.z0);
+      worst = std::max({worst, width / length, length / width});
+
+      near_pole += std::min(rho0, rho1) < 1e-3;
+    }
+  }
+  EXPECT_GT(near_pole, 1000);
+  // at most 2, but for the cell of a ring just below a pole's wedge (a quarter of a right angle
+  // wide), (pi / 2) / (2 - sqrt(2)) = 2.68 times as wide as long, which is halved across its
+  // longitudes next
+  EXPECT_LT(worst, 2.7);
 }
 
 // Near the pole, an edge at constant phi is a small circle around the pole. Seen from a ball centred
@@ -348,13 +403,13 @@ TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
   const std::vector<Point> points = unit_sphere_samples(d, 5);
   PDS::internal::Random rng(12);
   int proven = 0, useful = 0, useful_proven = 0;
-  const int trials = 2000;
+  const int trials = 3000;
   std::vector<Fragment> octants;
   traits.initial_fragments(std::back_inserter(octants));
   for(int trial = 0; trial < trials; ++trial) {
-    // a rectangle of the engine's subdivision, level 5 to 9: about D to D / 16 across
+    // a rectangle of the engine's subdivision, 10 to 19 splits below an octant: about D to D / 16 across
     const Fragment cell =
-        random_descendant(traits, octants[rng.uniform_index(8)], 5 + int(rng.uniform_index(5)), rng);
+        random_descendant(traits, octants[rng.uniform_index(8)], 10 + int(rng.uniform_index(10)), rng);
     const Rectangle f = Traits::rectangle(cell);
     const Traits::Point m = traits.reference_point(cell);
     double reach = 0;
@@ -398,8 +453,8 @@ TEST(SphereFragments, RefineAgreesWithTheOperationsItReplaces)
   std::vector<Fragment> octants;
   traits.initial_fragments(std::back_inserter(octants));
   Refine_counts counts;
-  for(int trial = 0; trial < 3000; ++trial) {
-    const Fragment f = random_descendant(traits, octants[rng.uniform_index(8)], 3 + int(rng.uniform_index(7)), rng);
+  for(int trial = 0; trial < 8000; ++trial) {
+    const Fragment f = random_descendant(traits, octants[rng.uniform_index(8)], 6 + int(rng.uniform_index(14)), rng);
     // the samples near the rectangle's middle, as the engine would pass them
     const Traits::Point m = traits.reference_point(f);
     std::vector<Traits::Point> near, around;
@@ -409,7 +464,9 @@ TEST(SphereFragments, RefineAgreesWithTheOperationsItReplaces)
       if(dist < d) near.push_back({{p.x(), p.y(), p.z()}});
     }
     const double radius = d * (rng.uniform() < 0.5 ? 1. : 0.9 + 0.2 * rng.uniform());
-    auto same = [](const Fragment& a, const Fragment& b) { return a.i == b.i && a.j == b.j && a.level == b.level; };
+    auto same = [](const Fragment& a, const Fragment& b) {
+      return a.i == b.i && a.j == b.j && a.halvings_theta == b.halvings_theta && a.halvings_z == b.halvings_z;
+    };
     expect_refine_agrees(traits, f, near, around, radius, same, counts, trial);
   }
   expect_every_branch_taken(counts);

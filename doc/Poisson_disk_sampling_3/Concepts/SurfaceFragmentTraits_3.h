@@ -78,9 +78,12 @@ public:
   /// Optional. The depth of `f`: the number of splits between `f` and the root fragment it comes
   /// from (0 for the fragments of `initial_fragments(out)`), or as many as it takes to shrink a whole
   /// root of `initial_fragments(out)` to the size of `f` (a piece of `initial_fragments(out, d)` may
-  /// start deeper than 0). The engine stops splitting at depth 40, the certificate at 48. A model
-  /// whose fragments carry this number spares the engine from storing it beside each active fragment
-  /// (for the triangle model, 24 bytes instead of 32; for the sphere model, 16 instead of 24).
+  /// start deeper than 0). A child's depth is its parent's or one more, and grows along any chain of
+  /// splits; the sphere model, which halves one range of a rectangle at a time, gives the larger of
+  /// the numbers of halvings of its two ranges. The engine stops splitting at depth 40, the
+  /// certificate at 48; without this operation both count the splits. A model whose fragments carry
+  /// this number spares the engine from storing it beside each active fragment (for the triangle
+  /// model, 24 bytes instead of 32; for the sphere model, 16 instead of 24).
   int level(const Fragment& f) const;
 
   /// Optional. Starts loading into the cache what `random_sample(f, rng)` will read, without waiting

@@ -28,13 +28,19 @@ namespace Poisson_disk_sampling_3 {
 /// longitude theta and height z = cos(phi) above the centre: the paper's rectangles in (theta, phi),
 /// bounded by the cosines of their polar angles. The area is the paper's Equation 1,
 /// R^2 (theta1 - theta0)(cos phi0 - cos phi1), and a uniform point is the paper's inverse CDF:
-/// theta uniform, cos(phi) uniform. Children split both ranges at their middle, so the four children
-/// have equal areas.
+/// theta uniform, cos(phi) uniform.
 ///
-/// The rectangles are the cells of a quadtree over the eight octants, and a fragment stores a cell
-/// by its level and its two indices (16 bytes; four bounds and a depth would take 40 in the engine's
-/// pool of active fragments). `rectangle()` computes its bounds, each from its own index, so that
-/// neighbouring cells share their bounds to the bit and the children of a cell tile it exactly.
+/// Splitting: a rectangle is halved across its longer side on the sphere, into two children of equal
+/// area. (The paper's four children, both ranges halved, make cells near the poles thin slivers,
+/// (pi / 2) rho^2 as wide as they are long at distance rho from the axis, since a range of heights is
+/// long and a range of longitudes short there: on the unit sphere at about a million points, a
+/// fifth of the darts went to the thousandth of the area within 2.6 degrees of the poles.)
+///
+/// The rectangles are cells of dyadic grids over the eight octants: a fragment stores its two
+/// indices and the two numbers of halvings of its ranges (16 bytes; four bounds and a depth would take
+/// 40 in the engine's pool of active fragments). `rectangle()` computes its bounds, each from its own
+/// index, so that neighbouring cells share their bounds to the bit and the children of a cell tile it
+/// exactly.
 ///
 /// Coverage: the paper tests the four corners of a rectangle against the ball, which fails near the
 /// poles, where the edges of constant phi are not great circles and bulge out of the ball between two
@@ -59,17 +65,19 @@ public:
     double z1;      ///< largest height cos(phi), in [-1, 1]
   };
 
-  /// a cell of the quadtree: the rectangle [i, i + 1] x pi / 2^(level + 1) in longitude by
-  /// [j, j + 1] / 2^level - 1 in height (see `rectangle()`)
+  /// a cell: the rectangle [i, i + 1] x pi / 2^(halvings_theta + 1) in longitude by
+  /// [j, j + 1] / 2^halvings_z - 1 in height (see `rectangle()`)
   struct Fragment
   {
-    std::uint64_t i;             ///< index in longitude, below 2^(level + 2)
-    std::uint64_t j : 58;        ///< index in height, below 2^(level + 1)
-    std::uint64_t level : 6;     ///< number of splits from an octant, at most `max_level`
+    std::uint64_t i;                  ///< index in longitude, below 2^(halvings_theta + 2)
+    std::uint64_t j : 52;             ///< index in height, below 2^(halvings_z + 1)
+    std::uint64_t halvings_theta : 6; ///< how many times an octant's range of longitudes was halved
+    std::uint64_t halvings_z : 6;     ///< how many times an octant's range of heights was halved
   };
 
-  /// the deepest level of a fragment: `split()` requires a shallower one (the engine stops at 40)
-  static constexpr int max_level = 56;
+  /// the deepest `level()` of a fragment: `split()` requires a shallower one (the engine stops at 40,
+  /// the certificate at 48)
+  static constexpr int max_level = 50;
 
   /// a sample
   struct Sample
@@ -108,20 +116,23 @@ public:
   OutputIterator initial_fragments(OutputIterator out) const
   {
     for(std::uint64_t i = 0; i < 4; ++i)
-      for(std::uint64_t j = 0; j < 2; ++j) *out++ = Fragment{i, j, 0};
+      for(std::uint64_t j = 0; j < 2; ++j) *out++ = Fragment{i, j, 0, 0};
     return out;
   }
 
-  /// the bounds of a cell: theta_k = k (pi / 2) / 2^level and z_k = k / 2^level - 1, each rounded
-  /// once (z exactly up to level 52), so that a bound does not depend on the cell it is computed for
+  /// the bounds of a cell: theta_k = k (pi / 2) / 2^halvings_theta and z_k = k / 2^halvings_z - 1,
+  /// each rounded once (z exactly), so that a bound does not depend on the cell it is computed for
   static Rectangle rectangle(const Fragment& f)
   {
-    const double w = internal::power_of_half(f.level), tw = quarter_turn() * w;
-    return Rectangle{double(f.i) * tw, double(f.i + 1) * tw, double(f.j) * w - 1, double(f.j + 1) * w - 1};
+    const double tw = quarter_turn() * internal::power_of_half(f.halvings_theta);
+    const double zw = internal::power_of_half(f.halvings_z);
+    return Rectangle{double(f.i) * tw, double(f.i + 1) * tw, double(f.j) * zw - 1, double(f.j + 1) * zw - 1};
   }
 
-  /// Optional operation of `SurfaceFragmentTraits_3`: the number of splits from an octant
-  int level(const Fragment& f) const { return int(f.level); }
+  /// Optional operation of `SurfaceFragmentTraits_3`: the larger of the numbers of halvings of the
+  /// two ranges. 0 for an octant; a split raises it by one or leaves it, and since every split halves
+  /// one of the ranges, it grows along any chain of splits
+  int level(const Fragment& f) const { return int((std::max)(f.halvings_theta, f.halvings_z)); }
 
   /// paper Equation 1
   double area(const Fragment& f) const { return area(rectangle(f)); }
@@ -209,21 +220,29 @@ public:
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the engine's step for a fragment that got a
   /// dart, with the same answers as `is_covered()`, `split()` and `is_covered_by_union()` called one
-  /// by one, in less time: the cosines and sines of the three longitudes the five rectangles share
-  /// are computed once. Returns `true` if one point of `near` covers `f` (and writes nothing);
+  /// by one, in less time: the cosines and sines of the longitudes the three rectangles share are
+  /// computed once. Returns `true` if one point of `near` covers `f` (and writes nothing);
   /// otherwise writes the children of `f` that neither one point of `near` nor the union of the balls
   /// around `around` covers.
   template <class PointRange, class OutputIterator>
   bool refine(const Fragment& fragment, const PointRange& near, const PointRange& around, double radius,
               OutputIterator children) const
   {
-    CGAL_precondition(int(fragment.level) < max_level);
+    CGAL_precondition(level(fragment) < max_level);
     const Rectangle f = rectangle(fragment);
-    const Fragment cell[4] = {child(fragment, 0), child(fragment, 1), child(fragment, 2), child(fragment, 3)};
-    // the middles, as rectangle() computes them for the children
-    const double tm = rectangle(cell[3]).theta0, zm = rectangle(cell[3]).z0;
-    const double cs[3] = {std::cos(f.theta0), std::cos(tm), std::cos(f.theta1)};
-    const double sn[3] = {std::sin(f.theta0), std::sin(tm), std::sin(f.theta1)};
+    const bool across_theta = halves_longitudes(f);
+    const Fragment cell[2] = {child(fragment, across_theta, 0), child(fragment, across_theta, 1)};
+    const Rectangle half[2] = {rectangle(cell[0]), rectangle(cell[1])};
+    // longitudes 0 and 2 are f's, 1 the middle if the longitudes are halved
+    double cs[3], sn[3];
+    cs[0] = std::cos(f.theta0);
+    sn[0] = std::sin(f.theta0);
+    cs[2] = std::cos(f.theta1);
+    sn[2] = std::sin(f.theta1);
+    if(across_theta) {
+      cs[1] = std::cos(half[1].theta0);
+      sn[1] = std::sin(half[1].theta0);
+    }
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
     // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
     Ball balls[64];
@@ -239,12 +258,9 @@ public:
       return false;
     };
     if(covered_by_one(f, 0, 2)) return true;
-    // as split() makes them
-    const Rectangle quarter[4] = {{f.theta0, tm, f.z0, zm}, {tm, f.theta1, f.z0, zm}, {f.theta0, tm, zm, f.z1},
-                                  {tm, f.theta1, zm, f.z1}};
-    for(int c = 0; c < 4; ++c) {
-      const int i0 = c % 2, i1 = i0 + 1;
-      const Rectangle& g = quarter[c];
+    for(int c = 0; c < 2; ++c) {
+      const int i0 = across_theta ? c : 0, i1 = across_theta ? c + 1 : 2;
+      const Rectangle& g = half[c];
       if(area(g) > 0 && !covered_by_one(g, i0, i1) &&
          !is_covered_by_union(g, around, radius, cs[i0], sn[i0], cs[i1], sn[i1]))
         *children++ = cell[c];
@@ -441,14 +457,28 @@ public:
     return true;
   }
 
-  /// the four children: both ranges split at their middle, the lower longitudes and heights first;
-  /// precondition: `level(f) < max_level`
+  /// the two halves of `f` across its longer side on the sphere (see the class comment), the lower
+  /// longitudes or heights first; precondition: `level(f) < max_level`
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator out) const
   {
-    CGAL_precondition(int(f.level) < max_level);
-    for(int c = 0; c < 4; ++c) *out++ = child(f, c);
+    CGAL_precondition(level(f) < max_level);
+    const bool across_theta = halves_longitudes(rectangle(f));
+    *out++ = child(f, across_theta, 0);
+    *out++ = child(f, across_theta, 1);
     return out;
+  }
+
+  /// whether `split()` halves the longitudes of `f` (else its heights): whether its wider edge of
+  /// constant height, R rho dtheta, is longer than the chord between its two heights in a meridian
+  /// plane, R sqrt(drho^2 + dz^2) (any rule gives children that tile `f`; this one keeps cells about
+  /// as wide as long, and near the poles, where no rectangle can be, wedges no wider than long)
+  bool halves_longitudes(const Rectangle& f) const
+  {
+    const double rho0 = rho_of(f.z0), rho1 = rho_of(f.z1);
+    const double width = (std::max)(rho0, rho1) * (f.theta1 - f.theta0);
+    const double drho = rho0 - rho1, dz = f.z1 - f.z0;
+    return width * width > drho * drho + dz * dz;
   }
 
   /// @}
@@ -461,10 +491,18 @@ private:
   static double pi() { return 3.14159265358979323846; }
   static double quarter_turn() { return 0.5 * pi(); }
 
-  // child c of f: c % 2 selects the upper half in longitude, c / 2 in height
-  static Fragment child(const Fragment& f, int c)
+  // half c (0 the lower, 1 the upper) of f, across its longitudes or its heights
+  static Fragment child(const Fragment& f, bool across_theta, int c)
   {
-    return Fragment{2 * f.i + std::uint64_t(c % 2), 2 * f.j + std::uint64_t(c / 2), f.level + 1u};
+    Fragment g = f;
+    if(across_theta) {
+      g.i = 2 * f.i + std::uint64_t(c);
+      g.halvings_theta = f.halvings_theta + 1;
+    } else {
+      g.j = 2 * f.j + std::uint64_t(c);
+      g.halvings_z = f.halvings_z + 1;
+    }
+    return g;
   }
 
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }

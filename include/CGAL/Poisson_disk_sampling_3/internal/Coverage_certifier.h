@@ -90,13 +90,13 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   auto split = [&](const Item& item, std::vector<Item>& out) {
     children.clear();
     traits.split(item.fragment, std::back_inserter(children));
-    for(const Fragment& c : children) out.push_back(Item{c, item.depth + 1});
+    for(const Fragment& c : children) out.push_back(Item{c, level_or(traits, c, item.depth + 1)});
   };
 
   std::vector<Item> stack, deferred;
   root_fragments(traits, d, boost::make_function_output_iterator([&](const Fragment& root) {
     if(!(traits.area(root) > 0)) return;
-    stack.push_back(Item{root, root_depth(traits, root)});
+    stack.push_back(Item{root, level_or(traits, root, 0)});
     while(!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();

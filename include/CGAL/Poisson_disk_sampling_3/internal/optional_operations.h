@@ -72,16 +72,16 @@ OutputIterator root_fragments(const Traits& traits, double d, OutputIterator out
   }
 }
 
-/// the depth of a root fragment: the model's level if it has one (the pieces of a face may start
-/// deeper than the face), else 0
+/// the depth of a fragment: the model's level if it has one (the pieces of a face may start deeper
+/// than the face, and a split may leave the level as it was), else `otherwise`
 template <class Traits>
-int root_depth(const Traits& traits, const typename Traits::Fragment& f)
+int level_or(const Traits& traits, const typename Traits::Fragment& f, int otherwise)
 {
   if constexpr(Has_level<Traits>::value) return int(traits.level(f));
   else {
     (void)traits;
     (void)f;
-    return 0;
+    return otherwise;
   }
 }
 
