@@ -130,25 +130,22 @@ TEST(SphereFragments, AreaIsEquationOneAndChildrenTileTheParent)
                       c1 = Traits::rectangle(children[1]);
       const bool theta = traits.halves_longitudes(p);
       (theta ? across_theta : across_z) += 1;
-      if(theta) {
-        EXPECT_EQ(c0.theta0, p.theta0);
-        EXPECT_EQ(c1.theta1, p.theta1);
-        EXPECT_EQ(c0.theta1, c1.theta0);
+      // the halved range [lo, hi] and the kept one [keep0, keep1], as members of Rectangle
+      auto expect_halves = [&](double Rectangle::*lo, double Rectangle::*hi, double Rectangle::*keep0,
+                               double Rectangle::*keep1, double tolerance) {
+        EXPECT_EQ(c0.*lo, p.*lo);
+        EXPECT_EQ(c1.*hi, p.*hi);
+        EXPECT_EQ(c0.*hi, c1.*lo);
         for(const Rectangle& c : {c0, c1}) {
-          EXPECT_EQ(c.z0, p.z0);
-          EXPECT_EQ(c.z1, p.z1);
-          EXPECT_NEAR(c.theta1 - c.theta0, 0.5 * (p.theta1 - p.theta0), 0x1p-48); // within their rounding
+          EXPECT_EQ(c.*keep0, p.*keep0);
+          EXPECT_EQ(c.*keep1, p.*keep1);
+          EXPECT_NEAR(c.*hi - c.*lo, 0.5 * (p.*hi - p.*lo), tolerance);
         }
-      } else {
-        EXPECT_EQ(c0.z0, p.z0);
-        EXPECT_EQ(c1.z1, p.z1);
-        EXPECT_EQ(c0.z1, c1.z0);
-        for(const Rectangle& c : {c0, c1}) {
-          EXPECT_EQ(c.theta0, p.theta0);
-          EXPECT_EQ(c.theta1, p.theta1);
-          EXPECT_EQ(c.z1 - c.z0, 0.5 * (p.z1 - p.z0)); // exactly
-        }
-      }
+      };
+      if(theta) // longitudes within the rounding of their bounds
+        expect_halves(&Rectangle::theta0, &Rectangle::theta1, &Rectangle::z0, &Rectangle::z1, 0x1p-48);
+      else // heights exactly
+        expect_halves(&Rectangle::z0, &Rectangle::z1, &Rectangle::theta0, &Rectangle::theta1, 0);
       for(const Fragment& c : children) {
         EXPECT_GE(traits.level(c), traits.level(f));
         EXPECT_LE(traits.level(c), traits.level(f) + 1);
