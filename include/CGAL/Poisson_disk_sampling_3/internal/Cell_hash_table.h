@@ -73,7 +73,7 @@ public:
     for(std::size_t k = hash(x, y, z) & mask;; k = (k + 1) & mask) {
       const Slot& s = slots_[k];
       if(s.value == none) return none;
-      if(s.x == key.x && s.y == key.y && s.z == key.z && (wide_.empty() || wide_[k] == c)) return s.value;
+      if(holds(k, key, c)) return s.value;
     }
   }
 
@@ -96,7 +96,7 @@ public:
         ++used_;
         return s.value;
       }
-      if(s.x == key.x && s.y == key.y && s.z == key.z && (wide_.empty() || wide_[k] == c)) return s.value;
+      if(holds(k, key, c)) return s.value;
     }
   }
 
@@ -112,6 +112,13 @@ private:
     std::uint32_t x = 0, y = 0, z = 0; // the low bits of the cell minus the origin
     std::uint32_t value = none;
   };
+
+  // whether the used slot k holds cell c, whose key is `key`
+  bool holds(std::size_t k, const Slot& key, const Cell& c) const
+  {
+    const Slot& s = slots_[k];
+    return s.x == key.x && s.y == key.y && s.z == key.z && (wide_.empty() || wide_[k] == c);
+  }
 
   // the difference of two coordinates below 2^62 in magnitude fits in 64 bits; modulo 2^32
   static std::uint32_t low_bits(std::int64_t a, std::int64_t o) { return std::uint32_t(std::uint64_t(a - o)); }
