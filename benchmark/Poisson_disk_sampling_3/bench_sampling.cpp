@@ -71,25 +71,35 @@ struct Heap_peak
   double bytes() const { return double(peak_bytes.load() - base); }
 };
 
-// The white-noise floor: n uniform random points on the mesh with CGAL's sampler. The fastest of five
-// runs: a run this short is easily disturbed, and the minimum makes floor_ratio err on the high side.
-double white_noise_seconds(const Mesh& m, std::size_t n)
+// The white-noise floor: the fastest of five runs of `draw(points)`, which writes n uniform random
+// points into `points` (reserved for them): a run this short is easily disturbed, and the minimum makes
+// floor_ratio err on the high side.
+template <class Draw>
+double fastest_of_five(std::size_t n, Draw draw)
 {
   double best = 1e300;
   for(int run = 0; run < 5; ++run) {
     std::vector<Point> points;
     points.reserve(n);
     const auto start = std::chrono::steady_clock::now();
+    draw(points);
+    best = (std::min)(best, seconds_since(start));
+    benchmark::DoNotOptimize(points.data());
+  }
+  return best;
+}
+
+// n uniform random points on the mesh with CGAL's sampler
+double white_noise_seconds(const Mesh& m, std::size_t n)
+{
+  return fastest_of_five(n, [&](std::vector<Point>& points) {
     PMP::sample_triangle_mesh(m, std::back_inserter(points),
                               CGAL::parameters::use_random_uniform_sampling(true)
                                   .number_of_points_on_faces(n)
                                   .do_sample_vertices(false)
                                   .do_sample_edges(false)
                                   .random_seed(1));
-    best = (std::min)(best, seconds_since(start));
-    benchmark::DoNotOptimize(points.data());
-  }
-  return best;
+  });
 }
 
 template <class Surface>
@@ -141,22 +151,14 @@ void mesh_case(benchmark::State& state, const std::string& name)
   state.counters["floor_ratio"] = seconds / floor;
 }
 
-// The sphere's white-noise floor: n uniform random points on it with CGAL's generator, fastest of five
-// runs as for the meshes
+// n uniform random points on the sphere with CGAL's generator
 double white_noise_seconds(const K::Sphere_3& sphere, std::size_t n)
 {
-  double best = 1e300;
-  for(int run = 0; run < 5; ++run) {
-    std::vector<Point> points;
-    points.reserve(n);
+  return fastest_of_five(n, [&](std::vector<Point>& points) {
     CGAL::Random rng(1);
-    const auto start = std::chrono::steady_clock::now();
     CGAL::Random_points_on_sphere_3<Point> g(std::sqrt(sphere.squared_radius()), rng);
     for(std::size_t i = 0; i < n; ++i, ++g) points.push_back(*g + (sphere.center() - CGAL::ORIGIN));
-    best = (std::min)(best, seconds_since(start));
-    benchmark::DoNotOptimize(points.data());
-  }
-  return best;
+  });
 }
 
 void sphere_case(benchmark::State& state)
