@@ -105,16 +105,27 @@ struct Counting_output
   }
 };
 
-/// The numbers of root fragments without and with minimum distance d (one per face for triangles, and
-/// with d the long thin faces' pieces), computed without storing them.
-template <class Traits>
-std::pair<std::size_t, std::size_t> count_root_fragments(const Traits& traits, double d)
+/// an output iterator that calls `f` on what is written to it
+template <class F>
+struct Calling_output
 {
-  std::size_t without = 0, with_d = 0;
-  traits.initial_fragments(Counting_output{&without});
-  root_fragments(traits, d, Counting_output{&with_d});
-  return {without, with_d};
-}
+  typedef std::output_iterator_tag iterator_category;
+  typedef void value_type;
+  typedef void difference_type;
+  typedef void pointer;
+  typedef void reference;
+  explicit Calling_output(F f) : f(f) {}
+  F f;
+  Calling_output& operator*() { return *this; }
+  Calling_output& operator++() { return *this; }
+  Calling_output& operator++(int) { return *this; }
+  template <class T>
+  Calling_output& operator=(const T& x)
+  {
+    f(x);
+    return *this;
+  }
+};
 
 } // namespace internal
 } // namespace Poisson_disk_sampling_3
