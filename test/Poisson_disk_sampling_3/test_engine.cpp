@@ -235,8 +235,9 @@ std::vector<std::array<double, 3>> sample_square(const Square_traits& traits, do
 
 bool certified_maximal(const Square_traits& traits, const std::vector<std::array<double, 3>>& points, double d)
 {
-  PDS::internal::Point_hash_grid grid(2 * d * (1 + 0x1.0p-10));
-  for(const auto& p : points) grid.insert(p.data());
+  std::vector<double> xyz;
+  for(const auto& p : points) xyz.insert(xyz.end(), p.begin(), p.end());
+  const PDS::internal::Point_hash_grid grid(2 * d * (1 + 0x1.0p-10), xyz.data(), points.size());
   return PDS::internal::certify_coverage(traits, grid, d).maximal;
 }
 

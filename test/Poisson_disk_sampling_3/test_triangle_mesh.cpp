@@ -309,10 +309,9 @@ TEST(MeshSampling, LongThinTrianglesCostAsMuchAsWellShapedOnes)
       EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(soup.points, soup.triangles, points, c.d));
       if(i == 0) {
         const PDS::Triangle_fragment_traits_3 traits = PDS::internal::triangles_of_soup(soup.points, soup.triangles);
-        PDS::internal::Point_hash_grid grid(2 * c.d * (1 + 0x1.0p-10));
-        std::vector<std::array<double, 3>> raw;
-        for(const Point& p : points) raw.push_back({{p.x(), p.y(), p.z()}});
-        for(const auto& p : raw) grid.insert(p.data());
+        std::vector<double> raw;
+        for(const Point& p : points) raw.insert(raw.end(), {p.x(), p.y(), p.z()});
+        const PDS::internal::Point_hash_grid grid(2 * c.d * (1 + 0x1.0p-10), raw.data(), points.size());
         EXPECT_TRUE(PDS::internal::certify_coverage(Whole_faces_only(traits), grid, c.d).maximal);
       }
     }

@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -83,6 +84,53 @@ TEST(IsPoissonDiskSet, ClustersBillionsOfCellsApart)
   EXPECT_EQ(c.second, points.size() - 1);
 }
 
+// The grid the validations query finds every point within the query radius, each with its own index
+// and coordinates, also through a cache of the cells of the query before, whether the cells span a few units (the points are sorted by one packed key) or
+// billions of cells (sorted by the cells' coordinates).
+TEST(PointHashGrid, FindsEveryPointNearAQuery)
+{
+  PDS::internal::Random rng(7);
+  for(const double far : {0., std::ldexp(1., 40)}) {
+    auto coordinates = [&](bool shifted) {
+      const double s = shifted ? far : 0;
+      return std::array<double, 3>{{s + 10 * rng.uniform() - 5, -s + 10 * rng.uniform() - 5, 10 * rng.uniform() - 5}};
+    };
+    std::vector<double> xyz;
+    for(int i = 0; i < 3000; ++i) {
+      const std::array<double, 3> c = coordinates(i % 3 == 0);
+      xyz.insert(xyz.end(), c.begin(), c.end());
+    }
+    const double r = 0.7;
+    const PDS::internal::Point_hash_grid grid(2 * r, xyz.data(), 3000);
+    ASSERT_EQ(grid.size(), 3000u);
+    // each query by the grid, then twice by Nearby_queries, the second time a little off the first
+    // (mostly the same cells, whose ranges it then reuses)
+    PDS::internal::Point_hash_grid::Nearby_queries nearby(grid);
+    std::size_t near = 0;
+    for(int q = 0; q < 400; ++q) {
+      std::array<double, 3> p = coordinates(q % 2 == 1);
+      for(int pass = 0; pass < 3; ++pass) {
+        if(pass == 2) p[q % 3] += 0.05;
+        std::vector<bool> found(3000, false);
+        auto record = [&](PDS::internal::Point_hash_grid::Index i, const double* c) {
+          ASSERT_LT(i, 3000u);
+          EXPECT_TRUE(c[0] == xyz[3 * i] && c[1] == xyz[3 * i + 1] && c[2] == xyz[3 * i + 2]);
+          found[i] = true;
+        };
+        if(pass == 0) grid.for_each_near(p.data(), r, record);
+        else nearby.for_each_near(p.data(), r, record);
+        for(std::size_t i = 0; i < 3000; ++i) {
+          const double dx = xyz[3 * i] - p[0], dy = xyz[3 * i + 1] - p[1], dz = xyz[3 * i + 2] - p[2];
+          if(dx * dx + dy * dy + dz * dz > r * r) continue;
+          ++near;
+          EXPECT_TRUE(found[i]) << "point " << i << " missed in pass " << pass;
+        }
+      }
+    }
+    EXPECT_GT(near, 1500u); // the queries did find points
+  }
+}
+
 TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)
 {
   const Mesh m = load_mesh("elephant.off");
@@ -126,10 +174,9 @@ TEST(IsMaximal, FarFromMaximalIsAnsweredAfterBoundedWork)
   // the uncovered share of a sample of the surface: points of the faces in proportion to their area
   std::vector<Point> grid;
   PDS::sample_triangle_mesh(m, std::back_inserter(grid), PDS::parameters::minimum_distance(d / 5));
-  PDS::internal::Point_hash_grid samples(d * (1 + 0x1.0p-10));
-  std::vector<std::array<double, 3>> xyz;
-  for(const Point& p : points) xyz.push_back({{p.x(), p.y(), p.z()}});
-  for(const auto& p : xyz) samples.insert(p.data());
+  std::vector<double> xyz;
+  for(const Point& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  const PDS::internal::Point_hash_grid samples(d * (1 + 0x1.0p-10), xyz.data(), points.size());
   std::size_t uncovered = 0;
   for(const Point& q : grid) {
     const double x[3] = {q.x(), q.y(), q.z()};

@@ -10,6 +10,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -59,9 +60,7 @@ inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
   for(double c : xyz) m = (std::max)(m, std::abs(c));
   if(m / (2 * d) > 0x1.0p60)
     throw Invalid_input("the minimum distance is too small for the extent of the points");
-  Point_hash_grid grid(2 * d * (1 + 0x1.0p-10), xyz.size() / 3);
-  for(std::size_t i = 0; i < xyz.size(); i += 3) grid.insert(&xyz[i]);
-  return grid;
+  return Point_hash_grid(2 * d * (1 + 0x1.0p-10), xyz.data(), xyz.size() / 3);
 }
 
 } // namespace internal
@@ -69,7 +68,8 @@ inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Checks that no two points are closer than `minimum_distance`: for every pair, |p - q| >= d is
 /// decided exactly on the stored coordinates (converted to double), with a floating-point filter and
-/// exact rational arithmetic where the filter cannot decide. Runs in expected linear time with a hash grid.
+/// exact rational arithmetic where the filter cannot decide. Sorts the points by cell of a grid of side
+/// 2d (O(n log n)), then runs in expected linear time.
 ///
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
 /// @param points the points
@@ -83,14 +83,17 @@ Poisson_disk_check is_poisson_disk_set(const PointRange& points, double minimum_
   const std::vector<double> xyz = internal::coordinates_of(points);
   const internal::Point_hash_grid grid = internal::grid_of(xyz, minimum_distance);
   Poisson_disk_check result;
-  for(std::size_t i = 0; i < xyz.size() / 3 && result.valid; ++i) {
-    const double* p = &xyz[3 * i];
+  // in the grid's order, by cell, so that the points near one point are mostly near the one before;
+  // each pair once, when its second point comes after the first in that order
+  for(std::size_t k = 0; k < grid.size() && result.valid; ++k) {
+    const double* p = grid.point(k);
     grid.for_each_near(p, minimum_distance, [&](internal::Point_hash_grid::Index j, const double* q) {
-      if(!result.valid || j <= i) return;
+      if(!result.valid || q <= p) return;
       if(internal::compare_distance_exact(p, q, minimum_distance) == CGAL::SMALLER) {
+        const std::size_t i = grid.index(k);
         result.valid = false;
-        result.first = i;
-        result.second = j;
+        result.first = (std::min)(i, std::size_t(j));
+        result.second = (std::max)(i, std::size_t(j));
       }
     });
   }

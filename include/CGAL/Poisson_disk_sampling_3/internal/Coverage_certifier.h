@@ -59,6 +59,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   const double defer_area = d * d * 0x1.0p-24;
 
   Certificate result;
+  Point_hash_grid::Nearby_queries near_samples(samples);
   std::vector<Fragment> children;
   std::vector<const double*> near;
   const double d2_near = d * d * (1 + 1e-9);
@@ -71,7 +72,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     const std::array<double, 3> ref = traits.reference_point(item.fragment);
     near.clear();
     bool ref_covered = false;
-    samples.for_each_near(ref.data(), d, [&](Point_hash_grid::Index, const double* q) {
+    near_samples.for_each_near(ref.data(), d, [&](Point_hash_grid::Index, const double* q) {
       const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
       if(dx * dx + dy * dy + dz * dz > d2_near) return;
       near.push_back(q);
