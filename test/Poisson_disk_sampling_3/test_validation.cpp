@@ -85,8 +85,8 @@ TEST(IsPoissonDiskSet, ClustersBillionsOfCellsApart)
 }
 
 // The grid the validations query finds every point within the query radius, each with its own index
-// and coordinates, also through a cache of the cells of the query before, whether the cells span a few units (the points are sorted by one packed key) or
-// billions of cells (sorted by the cells' coordinates).
+// and coordinates, also through its cache of the cells of the query before; whether the cells span a
+// few units (the points are sorted by one packed key) or billions (sorted by the cells' coordinates).
 TEST(PointHashGrid, FindsEveryPointNearAQuery)
 {
   PDS::internal::Random rng(7);

@@ -158,7 +158,8 @@ public:
       if(double(pieces) > 4 * double(max_points_) + 6 * double(faces))
         throw Pieces_limit_exceeded("at the minimum distance " + number_text(d_) +
                                     ", long thin faces would be cut into " + std::to_string(pieces) +
-                                    " more pieces than they are faces, more than four times maximum_number_of_points (" +
+                                    " more pieces than they are faces, more than four times "
+                                    "maximum_number_of_points (" +
                                     std::to_string(max_points_) + ") plus six per face (" + std::to_string(faces) +
                                     "); use a larger distance, raise the bound, or split the long edges");
     }
