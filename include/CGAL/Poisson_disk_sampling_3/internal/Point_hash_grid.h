@@ -109,17 +109,7 @@ public:
   {
     std::int64_t box[6];
     cell_box(p, radius, box);
-    for_each_in_cells(box, f);
-  }
-
-  /// calls `f(index, point)` for every point in a cell that meets the box [lo, hi]; may call it for
-  /// points outside the box, never misses one inside
-  template <class F>
-  void for_each_in_box(const double* lo, const double* hi, F&& f) const
-  {
-    const std::int64_t box[6] = {cell_of(lo[0]), cell_of(hi[0]), cell_of(lo[1]), cell_of(hi[1]),
-                                 cell_of(lo[2]), cell_of(hi[2])};
-    for_each_in_cells(box, f);
+    for_each_cell(box, [&](std::size_t first, std::size_t last) { visit(first, last, f); });
   }
 
   /// Queries that follow each other closely, as the pieces of a surface split depth first: a query
@@ -143,8 +133,7 @@ public:
         ranges_.clear();
         grid_.for_each_cell(box, [&](std::size_t first, std::size_t last) { ranges_.push_back({first, last}); });
       }
-      for(const auto& r : ranges_)
-        for(std::size_t k = r.first; k < r.second; ++k) f(grid_.index_[k], &grid_.points_[3 * k]);
+      for(const auto& r : ranges_) grid_.visit(r.first, r.second, f);
     }
 
   private:
@@ -180,12 +169,11 @@ private:
         }
   }
 
+  // calls f(index, point) for the points first to last - 1 in the grid's order
   template <class F>
-  void for_each_in_cells(const std::int64_t* box, F&& f) const
+  void visit(std::size_t first, std::size_t last, F& f) const
   {
-    for_each_cell(box, [&](std::size_t first, std::size_t last) {
-      for(std::size_t k = first; k < last; ++k) f(index_[k], &points_[3 * k]);
-    });
+    for(std::size_t k = first; k < last; ++k) f(index_[k], &points_[3 * k]);
   }
 
   double inv_cell_;
