@@ -44,8 +44,9 @@ public:
   /// Optional. The initial fragments for the minimum distance `minimum_distance`, which must tile the
   /// same surface; the engine and the maximality certificate use it instead of the one above when a
   /// model defines it. A model whose root fragments would split badly at some scale cuts them first
-  /// (`Triangle_fragment_traits_3` cuts long thin triangles into pieces about D long, whose count it
-  /// checks against `maximum_number_of_points` before storing any).
+  /// (`Triangle_fragment_traits_3` cuts long thin triangles into pieces one to four times max(D, w)
+  /// long, w their width; the engine counts the roots before storing any, and refuses them when they
+  /// outnumber the faces by more than four times `maximum_number_of_points` plus six per face).
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const;
 
@@ -94,8 +95,9 @@ public:
 
   /// Optional. The engine's step for a fragment that got a dart, done at once: returns `true` if one
   /// point of `near` covers `f` (as `is_covered()` decides it), and writes nothing; otherwise writes
-  /// the children of `f` (as `split()` makes them, in the same order) that no point of `near` covers
-  /// and that `is_covered_by_union(child, around, radius)` does not prove covered. The answers must be
+  /// the children of `f` (as `split()` makes them, in the same order) of positive area that no point
+  /// of `near` covers and that `is_covered_by_union(child, around, radius)` does not prove covered
+  /// (children of zero area are left out, as the engine does for `split()`). The answers must be
   /// those of the operations it replaces, so that it changes no sample; a model defines it when it can
   /// share work between them (`Triangle_fragment_traits_3` computes the six corners of the four
   /// children once, and tests each ball against each of them once). `near` and `around` are

@@ -15,8 +15,8 @@ namespace Poisson_disk_sampling_3 {
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Thrown for input that cannot be sampled: an empty surface, a face that is not a triangle,
 /// NaN or infinite coordinates, a radius, minimum distance or point count that is not positive and
-/// finite, a minimum distance outside 2^-400 to 2^400 or below the coordinates' rounding error, or
-/// contradictory size parameters. The message says which.
+/// finite, a minimum distance outside 2^-400 to 2^400 or not above 2^20 times the coordinates'
+/// rounding error, or contradictory size parameters. The message says which.
 class Invalid_input : public std::invalid_argument
 {
 public:

@@ -24,7 +24,8 @@ struct Maximality_check
 {
   bool maximal = true;  ///< every point of the surface is within the minimum distance of a sample
   /// when not maximal: total area of the pieces of the surface that could not be proven covered, an
-  /// upper bound of the uncovered area (pieces are refined down to about d^2/64 before being counted)
+  /// upper bound of the uncovered area (pieces are refined down to area max(d^2 / 64, 2^-20 of the
+  /// surface's area) before being counted)
   double uncovered_area = 0;
   /// when not maximal, a point of the surface proven farther than the minimum distance from every
   /// sample (a place where one more sample fits), if one was found
