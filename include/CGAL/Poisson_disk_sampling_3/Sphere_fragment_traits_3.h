@@ -6,6 +6,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/sin_cos.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/weights_of_three.h>
 
 #include <CGAL/assertions.h>
@@ -170,7 +171,10 @@ public:
   bool is_covered(const Rectangle& f, const Point& center, double radius) const
   {
     const Ball b = ball(center, radius);
-    return min_dot(f, b, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1), std::sin(f.theta1)) >= b.threshold;
+    double cos0, sin0, cos1, sin1;
+    internal::sin_cos(f.theta0, sin0, cos0);
+    internal::sin_cos(f.theta1, sin1, cos1);
+    return min_dot(f, b, cos0, sin0, cos1, sin1) >= b.threshold;
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: true only if every point of the rectangle is
@@ -214,8 +218,10 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Rectangle& f, const PointRange& centers, double radius) const
   {
-    return is_covered_by_union(f, centers, radius, std::cos(f.theta0), std::sin(f.theta0), std::cos(f.theta1),
-                               std::sin(f.theta1));
+    double cos0, sin0, cos1, sin1;
+    internal::sin_cos(f.theta0, sin0, cos0);
+    internal::sin_cos(f.theta1, sin1, cos1);
+    return is_covered_by_union(f, centers, radius, cos0, sin0, cos1, sin1);
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the engine's step for a fragment that got a
@@ -235,14 +241,9 @@ public:
     const Rectangle half[2] = {rectangle(cell[0]), rectangle(cell[1])};
     // longitudes 0 and 2 are f's, 1 the middle if the longitudes are halved
     double cs[3], sn[3];
-    cs[0] = std::cos(f.theta0);
-    sn[0] = std::sin(f.theta0);
-    cs[2] = std::cos(f.theta1);
-    sn[2] = std::sin(f.theta1);
-    if(across_theta) {
-      cs[1] = std::cos(half[1].theta0);
-      sn[1] = std::sin(half[1].theta0);
-    }
+    internal::sin_cos(f.theta0, sn[0], cs[0]);
+    internal::sin_cos(f.theta1, sn[2], cs[2]);
+    if(across_theta) internal::sin_cos(half[1].theta0, sn[1], cs[1]);
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
     // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
     Ball balls[64];
@@ -360,11 +361,12 @@ private:
     // - the sums W and A, of at most three products, are within 5 u S and 9 u B of their exact
     //   values computed from the rounded w_i; the minimum of u . W over unit vectors moves by at most
     //   the error of W;
-    // - min_dot() evaluates cos, sin (within an ulp) and rho = sqrt((1 - z)(1 + z)) (`rho_of`,
-    //   within 3 u relative; computed as sqrt(1 - z^2) it would be off by up to 2^-42 absolute near
-    //   a pole, about 1024 eps); with the products and the choice between an end and the trough
-    //   (which errs towards the smaller value, or off by the square of a rounding error), the
-    //   computed minimum is within 16 u |W| <= 16 u S of the exact one over the exact rectangle;
+    // - min_dot() evaluates cos, sin (within 2^-52 = 4 u, `internal::sin_cos`) and
+    //   rho = sqrt((1 - z)(1 + z)) (`rho_of`, within 3 u relative; computed as sqrt(1 - z^2) it would
+    //   be off by up to 2^-42 absolute near a pole, about 1024 eps); with the products and the choice
+    //   between an end and the trough (which errs towards the smaller value, or off by the square of a
+    //   rounding error), the computed minimum is within 20 u |W| <= 20 u S of the exact one over the
+    //   exact rectangle;
     // - the final sum and division add 2 u B / (2 R).
     // That is at most about (16 S + 4 B / R) eps; the margin takes 4096 eps (S + B / R), far more:
     // a too large margin only costs a few `false` answers near tangency.
@@ -517,7 +519,9 @@ private:
   Point at(double theta, double z) const
   {
     const double rho = rho_of(z);
-    return Point{{c_[0] + r_ * rho * std::cos(theta), c_[1] + r_ * rho * std::sin(theta), c_[2] + r_ * z}};
+    double s, c;
+    internal::sin_cos(theta, s, c);
+    return Point{{c_[0] + r_ * rho * c, c_[1] + r_ * rho * s, c_[2] + r_ * z}};
   }
 
   // Minimum of u . w over the rectangle, u = (rho cos theta, rho sin theta, z), rho = sqrt(1 - z^2).
