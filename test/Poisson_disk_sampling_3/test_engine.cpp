@@ -259,6 +259,35 @@ TEST(Engine, SamplesAUserModel)
   }
 }
 
+// A model may write its roots as any output iterator allows, here by assigning the iterator that
+// std::copy returns (output iterators are copy-assignable): the engine's and the certificate's
+// iterators take it, in both forms of initial_fragments, and the four quarters are sampled as the
+// whole square is.
+struct Quarters_traits : Square_traits
+{
+  template <class Out> Out initial_fragments(Out out) const
+  {
+    const std::array<Fragment, 4> q{{{0, 0, 0.5}, {0.5, 0, 0.5}, {0, 0.5, 0.5}, {0.5, 0.5, 0.5}}};
+    out = std::copy(q.begin(), q.end(), out);
+    return out;
+  }
+  template <class Out> Out initial_fragments(Out out, double) const { return initial_fragments(out); }
+};
+
+TEST(Engine, ModelMayAssignItsOutputIterator)
+{
+  const Quarters_traits traits;
+  const double d = 0.05;
+  std::vector<Square_traits::Sample> samples;
+  PDS::sample_surface(traits, std::back_inserter(samples), PDS::parameters::minimum_distance(d).random_seed(2));
+  ASSERT_GT(samples.size(), 100u);
+  std::vector<double> xyz;
+  for(const auto& s : samples) xyz.insert(xyz.end(), s.point.begin(), s.point.end());
+  const PDS::internal::Point_hash_grid grid(2 * d * (1 + 0x1.0p-10), xyz.data(), samples.size());
+  EXPECT_TRUE(PDS::internal::certify_coverage(traits, grid, d).maximal);
+  EXPECT_FALSE(PDS::internal::certify_coverage(traits, grid, d / 2).maximal);
+}
+
 // Darts land uniformly on the free area: the first sample of each run is uniform on the square, so its
 // x coordinate over many seeds is uniform on [0, 1] (a Kolmogorov-Smirnov bound at the 0.1% level).
 TEST(Engine, FirstDartIsUniform)

@@ -9,8 +9,6 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/optional_operations.h>
 
-#include <boost/iterator/function_output_iterator.hpp>
-
 #include <algorithm>
 #include <array>
 #include <iterator>
@@ -52,8 +50,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
 
   // the roots are made as they are certified, one at a time: a long face's pieces are not stored
   double total_area = 0;
-  traits.initial_fragments(
-      boost::make_function_output_iterator([&](const Fragment& f) { total_area += traits.area(f); }));
+  auto add_area = [&](const Fragment& f) { total_area += traits.area(f); };
+  traits.initial_fragments(Calling_output(&add_area));
   check_surface_area(total_area, "certify");
   const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
   const double defer_area = d * d * 0x1.0p-24;
@@ -95,7 +93,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
 
   std::vector<Item> stack, deferred;
-  root_fragments(traits, d, boost::make_function_output_iterator([&](const Fragment& root) {
+  auto certify_root = [&](const Fragment& root) {
     if(!(traits.area(root) > 0)) return;
     stack.push_back(Item{root, level_or(traits, root, 0)});
     while(!stack.empty()) {
@@ -114,7 +112,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       else if(area <= defer_area || item.depth >= max_depth) deferred.push_back(item);
       else split(item, stack);
     }
-  }));
+  };
+  root_fragments(traits, d, Calling_output(&certify_root));
 
   std::size_t spent = 0;
   std::vector<Item> next;

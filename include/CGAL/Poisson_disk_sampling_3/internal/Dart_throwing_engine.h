@@ -141,12 +141,13 @@ public:
     // start: 80 MB on the 3.3M-face mesh of the benchmarks, the peak when it is sampled sparsely.)
     std::size_t roots = 0;
     double total_area = 0, max_area = 0;
-    root_fragments(traits_, d_, Calling_output([&](const Fragment& f) {
-                     ++roots;
-                     const double a = traits_.area(f);
-                     total_area += a;
-                     if(a > max_area) max_area = a;
-                   }));
+    auto measure = [&](const Fragment& f) {
+      ++roots;
+      const double a = traits_.area(f);
+      total_area += a;
+      if(a > max_area) max_area = a;
+    };
+    root_fragments(traits_, d_, Calling_output(&measure));
     // The pieces of long thin faces: each takes a pool entry of 24 bytes and its share of a chunk, and
     // four per point of the bound and six per face leave room in the memory budget, 200 bytes a sample
     // and 300 a face. With fewer roots than four per point of the bound there is nothing to refuse, and
@@ -167,10 +168,11 @@ public:
     if(check_expected_count_) check_expected_count(total_area, d_, max_points_);
 
     Active_fragment_pool<Item> pool(max_area);
-    root_fragments(traits_, d_, Calling_output([&](const Fragment& f) {
-                     const double a = traits_.area(f);
-                     if(a > 0) pool.push(make_item(f, 0), a);
-                   }));
+    auto push = [&](const Fragment& f) {
+      const double a = traits_.area(f);
+      if(a > 0) pool.push(make_item(f, 0), a);
+    };
+    root_fragments(traits_, d_, Calling_output(&push));
 
     const double r = 0.5 * d_;
     const std::size_t expected = std::size_t(total_area / (3.14159265358979323846 * r * r)) + 1;

@@ -105,7 +105,9 @@ struct Counting_output
   }
 };
 
-/// an output iterator that calls `f` on what is written to it
+/// an output iterator that calls `*f` on what is written to it. It holds a pointer, not the function
+/// object, so that it is copy-assignable as output iterators must be (a model may write
+/// `out = std::copy(first, last, out);`), also for a lambda, which is not.
 template <class F>
 struct Calling_output
 {
@@ -114,15 +116,15 @@ struct Calling_output
   typedef void difference_type;
   typedef void pointer;
   typedef void reference;
-  explicit Calling_output(F f) : f(f) {}
-  F f;
+  explicit Calling_output(F* f) : f(f) {}
+  F* f;
   Calling_output& operator*() { return *this; }
   Calling_output& operator++() { return *this; }
   Calling_output& operator++(int) { return *this; }
   template <class T>
   Calling_output& operator=(const T& x)
   {
-    f(x);
+    (*f)(x);
     return *this;
   }
 };
