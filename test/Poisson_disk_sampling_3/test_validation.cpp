@@ -84,6 +84,28 @@ TEST(IsPoissonDiskSet, ClustersBillionsOfCellsApart)
   EXPECT_EQ(c.second, points.size() - 1);
 }
 
+// Points more than 2^44 d from the origin are refused at once: the rounding of such coordinates would
+// widen each query of the grid over many cells (at 2^60 d, seconds for one query). Up to 2^44 d they
+// are checked; coordinates whose sum with d overflows are refused too.
+TEST(IsPoissonDiskSet, RefusesPointsTooFarForTheDistance)
+{
+  for(const int e : {40, 44}) {
+    const double far = std::ldexp(1., e);
+    const std::vector<Point> points{{far, far, far}, {far, far - 0.5, far}, {far, far - 3, -far}};
+    const PDS::Poisson_disk_check c = PDS::is_poisson_disk_set(points, 1);
+    ASSERT_FALSE(c) << e;
+    EXPECT_EQ(c.first, 0u);
+    EXPECT_EQ(c.second, 1u);
+  }
+  for(const int e : {45, 50, 60}) {
+    const double far = std::ldexp(1., e);
+    EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{{far, far, far}, {far, far + 2, far}}, 1), PDS::Invalid_input)
+        << e;
+  }
+  const double big = 1e308;
+  EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{{-big, 0, 0}, {big, 0, 0}}, big), PDS::Invalid_input);
+}
+
 // The grid the validations query finds every point within the query radius, each with its own index
 // and coordinates, also through its cache of the cells of the query before; whether the cells span a
 // few units (the points are sorted by one packed key) or billions (sorted by the cells' coordinates).

@@ -66,7 +66,8 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
 /// @tparam NamedParameters accepts `vertex_point_map` and `geom_traits`, as `sample_triangle_mesh()`
-/// \throws Invalid_input for bad input, as `sample_triangle_mesh()`
+/// \throws Invalid_input for bad input, as `sample_triangle_mesh()`, and for samples that
+/// `is_poisson_disk_set()` refuses (a coordinate more than 2^44 d from the origin, for one)
 /// \returns `Maximality_check<Point_3>`, with the point type of the mesh's kernel
 template <class TriangleMesh, class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimum_distance,
@@ -83,6 +84,7 @@ auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimu
 /// @tparam PointRange a range of `Point_3`
 /// @tparam PolygonRange a range of ranges of three indices into `points`
 /// @tparam SampleRange a range of `Point_3` of any CGAL kernel
+/// \throws Invalid_input as `is_maximal()` for meshes
 template <class PointRange, class PolygonRange, class SampleRange>
 Maximality_check<typename std::iterator_traits<typename PointRange::const_iterator>::value_type>
 is_maximal_on_polygon_soup(const PointRange& points, const PolygonRange& polygons, const SampleRange& samples,
@@ -98,6 +100,8 @@ is_maximal_on_polygon_soup(const PointRange& points, const PolygonRange& polygon
 /// (right near the poles) and a margin larger than its rounding error.
 /// @tparam K a CGAL kernel
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
+/// \throws Invalid_input for a sphere or distance that `sample_sphere()` refuses, and for samples that
+/// `is_poisson_disk_set()` refuses
 template <class K, class PointRange>
 Maximality_check<typename K::Point_3> is_maximal(const CGAL::Sphere_3<K>& sphere, const PointRange& samples,
                                                  double minimum_distance)

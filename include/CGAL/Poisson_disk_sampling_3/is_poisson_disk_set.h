@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -53,13 +54,20 @@ inline void check_distance(double d)
   if(!(d > 0) || !std::isfinite(d)) throw Invalid_input("the minimum distance must be positive and finite");
 }
 
-/// a grid of the given points with cells of side 2d; refuses cells so small that cell indices overflow
+/// a grid of the given points with cells of side 2d. Refuses a distance below 2^-44 of the largest
+/// |coordinate| m: a query's box is widened by 1e-15 m for the rounding of its corners, which beyond
+/// about 2^50 d would span many cells per query (up to 2^60 d, where cell indices would overflow, a
+/// thousand on each axis); and refuses m + d beyond the doubles' range, where the boxes' corners would
+/// be infinite.
 inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
 {
   double m = 0;
   for(double c : xyz) m = (std::max)(m, std::abs(c));
-  if(m / (2 * d) > 0x1.0p60)
-    throw Invalid_input("the minimum distance is too small for the extent of the points");
+  if(m > 0x1.0p44 * d)
+    throw Invalid_input("the minimum distance is too small for the extent of the points: a coordinate is more "
+                        "than 2^44 times the distance");
+  if(!(m + 4 * d <= (std::numeric_limits<double>::max)()))
+    throw Invalid_input("the coordinates plus the minimum distance exceed the range of doubles");
   return Point_hash_grid(2 * d * (1 + 0x1.0p-10), xyz.data(), xyz.size() / 3);
 }
 
@@ -75,7 +83,8 @@ inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
 /// @param points the points
 /// @param minimum_distance the distance d = 2r
 /// \returns the verdict, and an offending pair if there is one
-/// \throws Invalid_input if d is not positive and finite or a coordinate is not finite
+/// \throws Invalid_input if d is not positive and finite, a coordinate is not finite, the largest
+/// |coordinate| is more than 2^44 d, or it plus 4 d exceeds the range of doubles
 template <class PointRange>
 Poisson_disk_check is_poisson_disk_set(const PointRange& points, double minimum_distance)
 {

@@ -104,6 +104,7 @@ public:
   /// `point` pointing into the grid's own copy (so that two of them compare as their positions in
   /// the grid's order). The query box is widened by more than the rounding error of its corners, so
   /// none is missed.
+  /// \throws Invalid_input (from `grid_cell()`) if |coordinate| + radius reaches 2^62 cells
   template <class F>
   void for_each_near(const double* p, double radius, F&& f) const
   {
@@ -128,10 +129,11 @@ public:
       std::int64_t box[6];
       grid_.cell_box(p, radius, box);
       if(!valid_ || !std::equal(box, box + 6, box_)) {
-        std::copy(box, box + 6, box_);
-        valid_ = true;
+        valid_ = false; // until the ranges are complete (push_back may throw)
         ranges_.clear();
         grid_.for_each_cell(box, [&](std::size_t first, std::size_t last) { ranges_.push_back({first, last}); });
+        std::copy(box, box + 6, box_);
+        valid_ = true;
       }
       for(const auto& r : ranges_) grid_.visit(r.first, r.second, f);
     }
