@@ -11,7 +11,7 @@ namespace Poisson_disk_sampling_3 {
 namespace internal {
 
 /// The sine and cosine of `x`, each within 2^-52 of the exact value (absolute error; checked
-/// against long double in test_sphere.cpp), computed with additions and multiplications only, so
+/// against 50-digit values in test_sphere.cpp), computed with additions and multiplications only, so
 /// that they are the same on every platform with IEEE doubles. For |x| <= 16 pi: x is reduced to
 /// r = x - k pi / 2, |r| <= pi / 4 (k pi / 2 in two parts: the first, with its last 8 bits zero,
 /// times k <= 32 is exact), then Taylor polynomials of degree 17 and 18 in r, whose truncation errors
