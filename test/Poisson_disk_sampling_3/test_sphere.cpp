@@ -140,12 +140,10 @@ TEST(SinCos, WithinTwoToTheMinus52OfTheExactValues)
   for(int i = 0; i < 20000; ++i) angles.push_back(32 * pi * (rng.uniform() - 0.5));
   for(int h = 0; h <= 10; ++h)
     for(int i = 0; i <= (4 << h); ++i) angles.push_back(double(i) * (0.5 * pi * std::ldexp(1., -h)));
-  for(int k = -64; k <= 64; ++k)
-    for(double x = k * (0.25 * pi), step = 0; step < 3; ++step) {
-      angles.push_back(x);
-      x = std::nextafter(x, step < 1 ? 0. : 1e9);
-      angles.push_back(x);
-    }
+  for(int k = -64; k <= 64; ++k) {
+    const double x = k * (0.25 * pi);
+    angles.insert(angles.end(), {std::nextafter(x, -1e9), x, std::nextafter(x, 1e9)});
+  }
   double worst = 0;
   for(double x : angles) {
     double s, c;

@@ -99,8 +99,8 @@ TEST(IsPoissonDiskSet, RefusesPointsTooFarForTheDistance)
   }
   for(const int e : {45, 50, 60}) {
     const double far = std::ldexp(1., e);
-    EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{{far, far, far}, {far, far + 2, far}}, 1), PDS::Invalid_input)
-        << e;
+    const std::vector<Point> points{{far, far, far}, {far, far + 2, far}};
+    EXPECT_THROW(PDS::is_poisson_disk_set(points, 1), PDS::Invalid_input) << e;
   }
   const double big = 1e308;
   EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{{-big, 0, 0}, {big, 0, 0}}, big), PDS::Invalid_input);
