@@ -33,6 +33,23 @@ namespace {
 namespace PDS = CGAL::Poisson_disk_sampling_3;
 using PDS::internal::Random;
 
+// uniform_index() takes the upper half of a 128-bit product: the path for compilers without 128-bit
+// integers must give the same values, or the points would depend on the compiler
+TEST(Random, ProductByHalvesIsTheFullProduct)
+{
+#if !defined(__SIZEOF_INT128__)
+  GTEST_SKIP() << "no 128-bit integers to compare with";
+#else
+  Random rng(3);
+  const std::uint64_t edge[] = {0, 1, 2, 0xffffffffu, 0x100000000u, ~std::uint64_t(0), ~std::uint64_t(0) - 1};
+  for(int i = 0; i < 100000; ++i) {
+    const std::uint64_t x = i < 49 ? edge[i % 7] : rng.next(), n = i < 49 ? edge[i / 7] : rng.next() >> (i % 64);
+    const std::uint64_t full = std::uint64_t((static_cast<unsigned __int128>(x) * n) >> 64);
+    ASSERT_EQ(Random::high_half_of_product_by_halves(x, n), full) << x << " " << n;
+  }
+#endif
+}
+
 TEST(Random, SameSeedSameStreamAndRanges)
 {
   Random a(5), b(5), c(6);

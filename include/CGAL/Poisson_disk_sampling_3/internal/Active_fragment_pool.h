@@ -4,6 +4,7 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_ACTIVE_FRAGMENT_POOL_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_ACTIVE_FRAGMENT_POOL_H
 
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
@@ -16,7 +17,6 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
-#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -68,8 +68,11 @@ public:
       bounds_.push_back(bin_bound(bins_.size()));
       bins_.emplace_back();
     }
+    // a handle holds an index within its bin in 32 bits; the engine's bounds keep a pool far below
+    // this unless maximum_number_of_points is raised beyond a billion
     if(bins_[b].size() >= std::numeric_limits<std::uint32_t>::max())
-      throw std::length_error("Active_fragment_pool: too many fragments in one bin");
+      throw Point_limit_exceeded("more than 2^32 active fragments of about the same area; use a larger "
+                                 "distance or fewer points");
     bins_[b].push_back(item);
     if(size_ == 0 || b < first_) first_ = b;
     if(size_ == 0 || b > last_) last_ = b;

@@ -44,9 +44,28 @@ public:
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }
 
   /// uniform integer in [0, n), n > 0 (Lemire's multiply-shift; the bias is below 2^-32 for n < 2^32)
-  std::uint64_t uniform_index(std::uint64_t n)
+  std::uint64_t uniform_index(std::uint64_t n) { return high_half_of_product(next(), n); }
+
+  /// the upper 64 bits of the 128-bit product x n: by a 128-bit multiplication where the compiler
+  /// has one, else from 32-bit halves (the same value: the stream does not depend on the compiler)
+  static std::uint64_t high_half_of_product(std::uint64_t x, std::uint64_t n)
   {
-    return std::uint64_t((static_cast<unsigned __int128>(next()) * n) >> 64);
+#if defined(__SIZEOF_INT128__)
+    return std::uint64_t((static_cast<unsigned __int128>(x) * n) >> 64);
+#else
+    return high_half_of_product_by_halves(x, n);
+#endif
+  }
+
+  /// `high_half_of_product()` by 32-bit halves, for any compiler
+  static std::uint64_t high_half_of_product_by_halves(std::uint64_t x, std::uint64_t n)
+  {
+    const std::uint64_t low = 0xffffffffu;
+    const std::uint64_t x0 = x & low, x1 = x >> 32, n0 = n & low, n1 = n >> 32;
+    const std::uint64_t p00 = x0 * n0, p01 = x0 * n1, p10 = x1 * n0, p11 = x1 * n1;
+    // the carry out of the low 64 bits: bits 32 to 63 of the three terms that reach them
+    const std::uint64_t middle = (p00 >> 32) + (p01 & low) + (p10 & low);
+    return p11 + (p01 >> 32) + (p10 >> 32) + (middle >> 32);
   }
 
 private:
