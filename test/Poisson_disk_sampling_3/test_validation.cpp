@@ -2,11 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The validation functions themselves: exact decisions at the threshold, offending pairs, and a
-// maximality certificate that fails where a sample is missing and says where.
+// maximality certificate that fails where a sample is missing and says where; and the checks of
+// test_support.h that do without the package's code.
 
 #include "test_support.h"
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <gtest/gtest-spi.h>
 
 #include <array>
 #include <chrono>
@@ -173,6 +176,33 @@ TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)
   for(const Point& p : points) EXPECT_GT(CGAL::squared_distance(p, *check.uncovered_point), d * d);
   // the hole is about one disk, not the whole surface
   EXPECT_LT(check.uncovered_area, 0.1 * CGAL::Polygon_mesh_processing::area(m));
+}
+
+// The checks of test_support.h that do without the package's code must be able to fail: a pair
+// closer than d, decided exactly at the threshold, and a hole where samples were removed.
+TEST(TestSupport, IndependentChecksFindACloserPairAndAHole)
+{
+  // |p - q| = d exactly, while d * d is rounded: the rationals decide
+  EXPECT_FALSE(is_closer_than(Point(0, 0, 0), Point(0.1, 0, 0), 0.1));
+  EXPECT_TRUE(is_closer_than(Point(0, 0, 0), Point(std::nextafter(0.1, 0.), 0, 0), 0.1));
+  const Mesh m = load_mesh("elephant.off");
+  const double d = 0.03;
+  std::vector<Point> points;
+  PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+  EXPECT_EQ(expect_no_pair_closer_than(points, d), 0u);
+  EXPECT_EQ(expect_probes_covered(m, points, d, 20 * points.size()), 0u);
+  std::vector<Point> closer = points;
+  closer.push_back(points[0] + K::Vector_3(0.5 * d, 0, 0));
+  std::size_t pairs = 0;
+  EXPECT_NONFATAL_FAILURE(pairs = expect_no_pair_closer_than(closer, d), "closer than");
+  EXPECT_GE(pairs, 1u);
+  // the samples within 2d of one removed: a hole about 2d across
+  std::vector<Point> holed;
+  for(const Point& p : points)
+    if(CGAL::squared_distance(p, points[0]) >= 4 * d * d) holed.push_back(p);
+  std::size_t far = 0;
+  EXPECT_NONFATAL_FAILURE(far = expect_probes_covered(m, holed, d, 20 * points.size()), "farther than");
+  EXPECT_GT(far, 0u);
 }
 
 // A set far from maximal for the distance asked (lion.off sampled at about 20,000 points, checked at
