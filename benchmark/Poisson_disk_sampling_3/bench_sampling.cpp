@@ -6,7 +6,10 @@
 // the same process and run. See benchmark/README.md for the command and the latest results.
 //
 // Every case validates its output outside the timed region (exact minimum distance and maximality
-// certificate) and reports an error if either fails: quality is not traded for speed.
+// certificate) and reports an error if either fails: quality is not traded for speed. sampling_only,
+// the case to profile, validates an untimed second run (the same seed: the same points), unless the
+// environment variable PDS_BENCH_PROFILE is set, so that a profile or a heap peak shows the sampler
+// alone.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Poisson_disk_sampling_3.h>
@@ -103,22 +106,23 @@ double white_noise_seconds(const Mesh& m, std::size_t n)
 }
 
 // Checks the output, outside the timed region; reports how long each check took (what a user who
-// validates a result waits for, beside the sampling itself).
+// validates a result waits for, beside the sampling itself), unless `report_seconds` is false.
 template <class Surface>
-bool validate(benchmark::State& state, const Surface& surface, const std::vector<Point>& points, double d)
+bool validate(benchmark::State& state, const Surface& surface, const std::vector<Point>& points, double d,
+              bool report_seconds = true)
 {
   auto start = std::chrono::steady_clock::now();
   if(!PDS::is_poisson_disk_set(points, d)) {
     state.SkipWithError("output is not a Poisson-disk set");
     return false;
   }
-  state.counters["check_seconds"] = seconds_since(start);
+  if(report_seconds) state.counters["check_seconds"] = seconds_since(start);
   start = std::chrono::steady_clock::now();
   if(!PDS::is_maximal(surface, points, d)) {
     state.SkipWithError("output is not maximal");
     return false;
   }
-  state.counters["certify_seconds"] = seconds_since(start);
+  if(report_seconds) state.counters["certify_seconds"] = seconds_since(start);
   return true;
 }
 
@@ -258,16 +262,21 @@ void linearity_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
   const double area = PMP::area(m);
+  const double d[2] = {distance_for(area, 1e5), distance_for(area, 1e6)};
+  std::vector<Point> last[2]; // the last run's points of each size, validated after the timed runs
   const std::array<double, 2> best = fastest_alternating(state, [&](std::size_t v) {
     std::vector<Point> points;
-    PDS::sample_triangle_mesh(m, std::back_inserter(points),
-                              PDS::parameters::minimum_distance(distance_for(area, v ? 1e6 : 1e5)));
+    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d[v]));
+    last[v] = std::move(points); // frees the run before's vector, as the end of `points` did
   });
+  for(std::size_t v = 0; v < 2; ++v)
+    if(!validate(state, m, last[v], d[v], false)) return;
   state.counters["seconds_1M_over_100k"] = best[1] / best[0]; // <= 12 is the target
 }
 
-// One sampling call and nothing else (no white-noise floor, no validation): the case the profiles of
-// README.md are taken on, with perf at one million points and under valgrind's cachegrind at 100,000.
+// One sampling call, the points counted, not stored (no white-noise floor): the case the profiles of
+// README.md are taken on, with perf at one million points and under valgrind's cachegrind at 100,000,
+// with PDS_BENCH_PROFILE set so that the validation of an untimed second run is skipped.
 void sampling_only_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
@@ -283,6 +292,15 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
                               PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     state.SetIterationTime(seconds_since(start));
     peak = heap.bytes();
+  }
+  if(!std::getenv("PDS_BENCH_PROFILE")) {
+    std::vector<Point> points;
+    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+    if(points.size() != n) {
+      state.SkipWithError("a second run with the same seed gave another number of points");
+      return;
+    }
+    if(!validate(state, m, points, d, false)) return;
   }
   state.counters["points"] = double(n);
   state.counters["darts_per_point"] = double(stats.darts) / double(n);
@@ -370,6 +388,25 @@ void union_test_case(benchmark::State& state, const std::string& name)
                           PDS::parameters::minimum_distance(d));
     }
   });
+  // Each variant's output, sampled once more outside the timed runs (the same seed, so the same points
+  // as its timed runs): the two without refine() validated, and refine() giving the same points as the
+  // union test through the concept's operations, as it must.
+  std::vector<Point> out[3];
+  for(std::size_t v = 0; v < 3; ++v) {
+    auto store = boost::make_function_output_iterator([&](const PDS::Triangle_fragment_traits_3::Sample& s) {
+      out[v].push_back(Point(s.point[0], s.point[1], s.point[2]));
+    });
+    const auto np = PDS::parameters::minimum_distance(d);
+    if(v == 0) PDS::sample_surface(with_union, store, np);
+    else if(v == 1) PDS::sample_surface(plain, store, np);
+    else PDS::sample_surface(traits, store, np);
+  }
+  for(std::size_t v = 0; v < 2; ++v)
+    if(!validate(state, m, out[v], d, false)) return;
+  if(out[2] != out[0]) {
+    state.SkipWithError("refine() gave other points than the concept's operations with the union test");
+    return;
+  }
   state.counters["darts_per_point_with_union_test"] = double(with.darts) / double(n_with);
   state.counters["darts_per_point_without"] = double(without.darts) / double(n_without);
   state.counters["seconds_with_over_without"] = best[0] / best[1];
