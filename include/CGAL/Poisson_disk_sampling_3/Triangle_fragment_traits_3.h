@@ -87,7 +87,7 @@ public:
 
   /// @}
 
-  /// adds the triangle (`p0`, `p1`, `p2`) and returns its face index; a triangle of zero area is
+  /// adds the triangle (`q0`, `q1`, `q2`) and returns its face index; a triangle of zero area is
   /// kept (so that face indices follow the input) but has no fragment.
   /// \throws Invalid_input if a coordinate is not finite
   std::uint32_t add_triangle(const Point& q0, const Point& q1, const Point& q2)

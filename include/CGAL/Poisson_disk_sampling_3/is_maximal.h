@@ -66,8 +66,14 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
 /// @tparam NamedParameters accepts `vertex_point_map` and `geom_traits`, as `sample_triangle_mesh()`
+///
+/// @param tm the mesh
+/// @param samples the samples to certify
+/// @param minimum_distance the distance d = 2r they were sampled for
+/// @param np the named parameters `vertex_point_map` and `geom_traits`
+///
 /// \throws Invalid_input for bad input, as `sample_triangle_mesh()`, and for samples that
-/// `is_poisson_disk_set()` refuses (a coordinate more than 2^44 d from the origin, for one)
+/// `is_poisson_disk_set()` refuses (a coordinate of magnitude above 2^44 d, for one)
 /// \returns `Maximality_check<Point_3>`, with the point type of the mesh's kernel
 template <class TriangleMesh, class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimum_distance,
@@ -84,6 +90,13 @@ auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimu
 /// @tparam PointRange a range of `Point_3`
 /// @tparam PolygonRange a range of ranges of three indices into `points`
 /// @tparam SampleRange a range of `Point_3` of any CGAL kernel
+///
+/// @param points the points of the soup
+/// @param polygons the triangles, as indices into `points`
+/// @param samples the samples to certify
+/// @param minimum_distance the distance d = 2r they were sampled for
+///
+/// \returns `Maximality_check<Point_3>`, with the point type of `points`
 /// \throws Invalid_input as `is_maximal()` for meshes
 template <class PointRange, class PolygonRange, class SampleRange>
 Maximality_check<typename std::iterator_traits<typename PointRange::const_iterator>::value_type>
@@ -100,6 +113,12 @@ is_maximal_on_polygon_soup(const PointRange& points, const PolygonRange& polygon
 /// (right near the poles) and a margin larger than its rounding error.
 /// @tparam K a CGAL kernel
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
+///
+/// @param sphere the sphere
+/// @param samples the samples to certify
+/// @param minimum_distance the distance d = 2r they were sampled for
+///
+/// \returns `Maximality_check<K::Point_3>`
 /// \throws Invalid_input for a sphere or distance that `sample_sphere()` refuses, and for samples that
 /// `is_poisson_disk_set()` refuses
 template <class K, class PointRange>

@@ -24,7 +24,8 @@ enum statistics_t { statistics };
 /// this namespace: a chain that uses one of them starts here, e.g.
 /// `PDS::parameters::minimum_distance(0.1).random_seed(7)`. The chain offers the package's own
 /// parameters and the CGAL ones the package reads (`random_seed`, `vertex_point_map`, `geom_traits`),
-/// in any order. CGAL's own `CGAL::parameters::...` chains are accepted too.
+/// in any order. CGAL's own `CGAL::parameters::...` chains are accepted where no package parameter
+/// is needed (`is_maximal()`); the samplers need a size, which only a chain started here can carry.
 namespace parameters {
 
 /// \ingroup PkgPoissonDiskSampling3Ref

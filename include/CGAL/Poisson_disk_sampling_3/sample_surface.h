@@ -143,7 +143,7 @@ void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// uses the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2
 /// points); later runs correct d with the slope of log(count) over log(d) measured between runs,
 /// and bisect the bracket of distances that gave too many and too few points when a step would
-/// leave it. Usually two or three full runs.
+/// leave it. One to three full runs, more for small targets.
 template <class Traits>
 std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
                                                    std::size_t max_points, Sampling_statistics& stats)
@@ -162,7 +162,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   Sampling_statistics best_stats;
   // Up to 24 runs: near the target a run is a draw of a count that varies by a few points from one
   // distance to the next, and for 150 points only 149 to 151 are within tolerance. Large targets
-  // take two or three runs (their tolerance is wide); small ones, that may need more, are cheap.
+  // take one to three runs (their tolerance is wide); small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
     std::vector<typename Traits::Sample> samples;
     try {
@@ -255,7 +255,7 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_points}
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
-///       has N points within 1% (at least one point), usually in two or three full runs}
+///       has N points within 1% (at least one point), in one to three full runs, more for small targets}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}

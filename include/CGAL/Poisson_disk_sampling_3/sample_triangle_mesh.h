@@ -165,8 +165,17 @@ PointOutputIterator sample_triangle_mesh(const TriangleMesh& tm, PointOutputIter
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Same as `sample_triangle_mesh()`, and writes for each sample its face, barycentric coordinates and
 /// the face normal.
+/// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam SampleOutputIterator an output iterator accepting
 ///         `Triangle_sample<GeomTraits, boost::graph_traits<TriangleMesh>::%face_descriptor>`
+/// @tparam NamedParameters as for `sample_triangle_mesh()`
+///
+/// @param tm the mesh
+/// @param out where the samples are written
+/// @param np as for `sample_triangle_mesh()`
+///
+/// \returns the output iterator past the last sample
+/// \throws Invalid_input, Point_limit_exceeded, Target_not_reached as `sample_triangle_mesh()`
 template <class TriangleMesh, class SampleOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 SampleOutputIterator sample_triangle_mesh_with_locations(const TriangleMesh& tm, SampleOutputIterator out,
@@ -191,6 +200,12 @@ SampleOutputIterator sample_triangle_mesh_with_locations(const TriangleMesh& tm,
 /// @tparam PointOutputIterator an output iterator accepting `Point_3`
 /// @tparam NamedParameters as for `sample_triangle_mesh()`, without `vertex_point_map`
 ///
+/// @param points the points of the soup
+/// @param polygons the triangles, as indices into `points`
+/// @param out where the points are written
+/// @param np as for `sample_triangle_mesh()`, without `vertex_point_map`
+///
+/// \returns the output iterator past the last point
 /// \throws Invalid_input for no polygons, a polygon that is not a triangle, an index out of range,
 ///         a non-finite coordinate, a bad size, or a soup of zero area
 /// \throws Point_limit_exceeded, Target_not_reached as `sample_triangle_mesh()`
@@ -214,7 +229,18 @@ PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonR
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Same as `sample_polygon_soup()`, and writes for each sample the polygon's index, barycentric
 /// coordinates in the polygon's vertex order and its normal.
+/// @tparam PointRange a random-access range of `Point_3`
+/// @tparam PolygonRange a range of ranges of integer indices into `points`
 /// @tparam SampleOutputIterator an output iterator accepting `Triangle_sample<GeomTraits, std::size_t>`
+/// @tparam NamedParameters as for `sample_polygon_soup()`
+///
+/// @param points the points of the soup
+/// @param polygons the triangles, as indices into `points`
+/// @param out where the samples are written
+/// @param np as for `sample_polygon_soup()`
+///
+/// \returns the output iterator past the last sample
+/// \throws Invalid_input, Point_limit_exceeded, Target_not_reached as `sample_polygon_soup()`
 template <class PointRange, class PolygonRange, class SampleOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 SampleOutputIterator sample_polygon_soup_with_locations(const PointRange& points, const PolygonRange& polygons,
