@@ -23,6 +23,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -129,6 +131,24 @@ TEST(ActiveFragmentPool, ReachesBinsFarBelowTheFirst)
   std::sort(rest.begin(), rest.end());
   EXPECT_EQ(rest, (std::vector<int>{1, 2}));
   EXPECT_TRUE(pool.empty());
+}
+
+// A fragment whose bin's bound, max_area 2^-b, is below the normal doubles, where it is rounded: here
+// 1.75 2^-1073, rounded to 4 2^-1074, for an area of 3 2^-1074. The draw must still accept it with
+// probability area / bound = 6/7 (3/4 with the rounded bound), and the bin of an area 2^1074 times
+// smaller than the largest must be found (a quotient of the two used to overflow).
+TEST(ActiveFragmentPool, AcceptsExactlyWhereBinBoundsAreSubnormal)
+{
+  const double area = 3 * std::numeric_limits<double>::denorm_min();
+  PDS::internal::Active_fragment_pool<int> pool(1.75);
+  pool.push(0, area);
+  pool.begin_batch();
+  Random rng(8);
+  const int draws = 40000;
+  int accepted = 0;
+  for(int k = 0; k < draws; ++k) accepted += pool.accepts(pool.draw(rng), area, rng.uniform());
+  const double p = 6. / 7, sigma = std::sqrt(draws * p * (1 - p));
+  EXPECT_NEAR(accepted, draws * p, 5 * sigma);
 }
 
 // A batch takes many entries of the same bins, some twice, while children are pushed: at its end

@@ -337,4 +337,21 @@ TEST(MeshSampling, MessySoupIsCoveredAndDegenerateFacesSkipped)
   EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, points, 0.05));
 }
 
+// Faces whose area is below the largest's / 2^1024 (a sliver 1e-310 high, subnormal, and one of
+// 1e-302 next to a face of 2e6): the pool's bin of such an area came from a quotient that overflowed,
+// and a search from there took about ten seconds per fragment, minutes in all. Sampled as any face.
+TEST(MeshSampling, FacesFarSmallerThanTheLargestAreSampled)
+{
+  for(const auto& [scale, height, d] :
+      {std::make_tuple(1., 1e-310, 0.1), std::make_tuple(2000., 1e-302, 100.)}) {
+    Mesh m;
+    auto v = [&](double x, double y) { return m.add_vertex(Point(x, y, 0)); };
+    m.add_face(v(0, 0), v(scale, 0), v(0, scale));
+    m.add_face(v(2 * scale, 0), v(2 * scale + 1, 0), v(2 * scale, height));
+    std::vector<Point> points;
+    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+    expect_maximal_poisson_disk_set(m, points, d);
+  }
+}
+
 } // namespace

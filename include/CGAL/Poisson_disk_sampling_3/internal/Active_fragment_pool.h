@@ -51,7 +51,8 @@ public:
     std::uint32_t index;
   };
 
-  explicit Active_fragment_pool(double max_area) : max_area_(max_area)
+  explicit Active_fragment_pool(double max_area)
+    : max_area_(max_area), max_exponent_(std::ilogb(max_area)), normal_bins_(max_exponent_ + 1023)
   {
     CGAL_precondition(max_area > 0 && std::isfinite(max_area));
   }
@@ -111,7 +112,9 @@ public:
   bool accepts(const Handle& h, double area, double u) const
   {
     CGAL_precondition(bin_of(area) == h.bin);
-    return u * bounds_[h.bin] < area;
+    if(int(h.bin) < normal_bins_) return u * bounds_[h.bin] < area;
+    // a bound below the normal doubles is rounded: compare with the area scaled up, exactly
+    return u * max_area_ < std::ldexp(area, int(h.bin));
   }
 
   void prefetch(const Handle& h) const { internal::prefetch(&bins_[h.bin][h.index]); }
@@ -220,19 +223,30 @@ private:
 
   double bin_bound(std::size_t b) const { return std::ldexp(max_area_, -int(b)); }
 
+  // the b with max_area_ 2^-(b+1) < area <= max_area_ 2^-b. The difference of the exponents is b or
+  // b + 1, for any positive area (the quotient of the areas, which it replaces, overflowed to infinity
+  // below max_area_ / 2^1024, and the loops then ran 2^31 times). Where the bounds are normal doubles
+  // they are exact and come from the table; below, the area is scaled up instead, exactly.
   std::size_t bin_of(double area) const
   {
     if(area >= max_area_) return 0;
-    int b = std::ilogb(max_area_ / area);
+    int b = max_exponent_ - std::ilogb(area);
     if(b < 0) b = 0;
-    while(b > 0 && area > bound(std::size_t(b))) --b;
-    while(area <= bound(std::size_t(b) + 1)) ++b;
+    if(b + 1 < normal_bins_) {
+      while(b > 0 && area > bound(std::size_t(b))) --b;
+      while(area <= bound(std::size_t(b) + 1)) ++b;
+    } else {
+      while(b > 0 && std::ldexp(area, b) > max_area_) --b;
+      while(std::ldexp(area, b + 1) <= max_area_) ++b;
+    }
     return std::size_t(b);
   }
   // bin_bound(b), from the table when the bin exists
   double bound(std::size_t b) const { return b < bounds_.size() ? bounds_[b] : bin_bound(b); }
 
   double max_area_;
+  int max_exponent_; // std::ilogb(max_area_)
+  int normal_bins_; // bins 0 to normal_bins_ - 1 have bounds max_area_ 2^-b that are normal doubles
   std::vector<Chunked_array> bins_;
   std::vector<double> bounds_; // bin_bound(b), so that a pick calls no ldexp
   std::size_t first_ = 0, last_ = 0; // the non-empty bins are among [first_, last_]
