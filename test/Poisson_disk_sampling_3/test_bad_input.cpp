@@ -66,6 +66,13 @@ TEST(BadInput, BadSizes)
     EXPECT_THROW(PDS::is_maximal(m, std::vector<Point>(), r), PDS::Invalid_input) << r;
   }
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(0)), PDS::Invalid_input);
+  // finite, but twice it is not: the message says so, not that the radius is not finite
+  try {
+    sample(m, PDS::parameters::radius(1e308));
+    ADD_FAILURE() << "radius(1e308) was expected to be refused";
+  } catch(const PDS::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("2r overflows"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(sample(m, CGAL::parameters::default_values()), PDS::Invalid_input) << "no size";
   EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).minimum_distance(0.2)), PDS::Invalid_input) << "two sizes";
   EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).number_of_points(10)), PDS::Invalid_input) << "two sizes";
@@ -167,6 +174,7 @@ TEST(BadInput, CountsAndBoundsAtTheirExtremes)
   EXPECT_GT(out.size(), 10u);
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(largest)), PDS::Point_limit_exceeded);
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(2.5)), PDS::Invalid_input);
+  EXPECT_THROW(sample(m, PDS::parameters::radius(0.05).maximum_number_of_points(1.5)), PDS::Invalid_input);
 }
 
 // Squares of distances below the smallest normal double lose their relative precision: the

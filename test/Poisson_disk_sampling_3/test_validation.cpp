@@ -50,6 +50,24 @@ TEST(IsPoissonDiskSet, DecidesExactlyWhereSquaresAreSubnormal)
   EXPECT_FALSE(PDS::is_poisson_disk_set(pair, d));
 }
 
+// Distances so small that the grid's 1 / cell overflows (d below about 2.8e-309, subnormal): still
+// decided, exactly, not refused as coordinates too large for the distance.
+TEST(IsPoissonDiskSet, DecidesAtSubnormalDistances)
+{
+  const double t = 1e-309;
+  const std::vector<Point> twice = {Point(0, 0, 0), Point(0, 0, 0)}, pair = {Point(0, 0, 0), Point(t, 0, 0)};
+  const PDS::Poisson_disk_check c = PDS::is_poisson_disk_set(twice, 1e-310);
+  EXPECT_FALSE(c);
+  EXPECT_EQ(c.first, 0u);
+  EXPECT_EQ(c.second, 1u);
+  EXPECT_FALSE(PDS::is_poisson_disk_set(pair, 2e-309));
+  EXPECT_FALSE(PDS::is_poisson_disk_set(pair, std::nextafter(t, 1.)));
+  EXPECT_TRUE(PDS::is_poisson_disk_set(pair, t));
+  EXPECT_TRUE(PDS::is_poisson_disk_set(pair, 1e-312));
+  // a coordinate beyond 2^44 d is refused, as at any distance
+  EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{Point(1e-290, 0, 0)}, t), PDS::Invalid_input);
+}
+
 TEST(IsPoissonDiskSet, NamesTheOffendingPair)
 {
   std::vector<Point> points;

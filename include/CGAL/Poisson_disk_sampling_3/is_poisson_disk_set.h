@@ -89,16 +89,25 @@ template <class PointRange>
 Poisson_disk_check is_poisson_disk_set(const PointRange& points, double minimum_distance)
 {
   internal::check_distance(minimum_distance);
-  const std::vector<double> xyz = internal::coordinates_of(points);
-  const internal::Point_hash_grid grid = internal::grid_of(xyz, minimum_distance);
+  std::vector<double> xyz = internal::coordinates_of(points);
+  double d = minimum_distance;
+  // Below 2^-400 (and the samplers refuse such distances) the grid's 1 / cell would overflow: the
+  // coordinates and d are scaled up by one power of two, which is exact (or overflows, for
+  // coordinates that the grid refuses anyway) and leaves every comparison of distances as it was.
+  if(d < 0x1.0p-400) {
+    const int e = -std::ilogb(d);
+    for(double& c : xyz) c = std::ldexp(c, e);
+    d = std::ldexp(d, e);
+  }
+  const internal::Point_hash_grid grid = internal::grid_of(xyz, d);
   Poisson_disk_check result;
   // in the grid's order, by cell, so that the points near one point are mostly near the one before;
   // each pair once, when its second point comes after the first in that order
   for(std::size_t k = 0; k < grid.size() && result.valid; ++k) {
     const double* p = grid.point(k);
-    grid.for_each_near(p, minimum_distance, [&](internal::Point_hash_grid::Index j, const double* q) {
+    grid.for_each_near(p, d, [&](internal::Point_hash_grid::Index j, const double* q) {
       if(!result.valid || q <= p) return;
-      if(internal::compare_distance_exact(p, q, minimum_distance) == CGAL::SMALLER) {
+      if(internal::compare_distance_exact(p, q, d) == CGAL::SMALLER) {
         const std::size_t i = grid.index(k);
         result.valid = false;
         result.first = (std::min)(i, std::size_t(j));

@@ -83,6 +83,8 @@ Size_request read_size(const NamedParameters& np)
   if(has_r || has_d) {
     const double r = choose_parameter(get_parameter(np, internal_np::radius), 0.);
     const double d = has_r ? 2 * r : double(choose_parameter(get_parameter(np, internal_np::minimum_distance), 0.));
+    if(has_r && r > 0 && std::isfinite(r) && !std::isfinite(d))
+      throw Invalid_input("the radius " + number_text(r) + " is too large: the minimum distance 2r overflows");
     if(!(d > 0) || !std::isfinite(d))
       throw Invalid_input(std::string(has_r ? "the radius" : "the minimum distance") + " must be positive and finite");
     s.minimum_distance = d;
@@ -108,16 +110,17 @@ std::size_t read_max_points(const NamedParameters& np)
   const double m = double(CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::maximum_number_of_points), 100000000.));
   if(!(m >= 1) || !std::isfinite(m)) throw Invalid_input("maximum_number_of_points must be at least 1");
+  if(m != std::floor(m)) throw Invalid_input("maximum_number_of_points must be a whole number");
   return to_size(m);
 }
 
+// summed as the roots are made, not stored (24 bytes a face: 80 MB on a mesh of 3.3 million faces)
 template <class Traits>
 double total_area(const Traits& traits)
 {
-  std::vector<typename Traits::Fragment> roots;
-  traits.initial_fragments(std::back_inserter(roots));
   double a = 0;
-  for(const auto& f : roots) a += traits.area(f);
+  auto add = [&](const typename Traits::Fragment& f) { a += traits.area(f); };
+  traits.initial_fragments(Calling_output(&add));
   return a;
 }
 
