@@ -149,6 +149,16 @@ TEST(ActiveFragmentPool, AcceptsExactlyWhereBinBoundsAreSubnormal)
   for(int k = 0; k < draws; ++k) accepted += pool.accepts(pool.draw(rng), area, rng.uniform());
   const double p = 6. / 7, sigma = std::sqrt(draws * p * (1 - p));
   EXPECT_NEAR(accepted, draws * p, 5 * sigma);
+  // the largest area subnormal too (a surface of slivers): 2 2^-1074 against 3 2^-1074, 2/3 (1/2
+  // where the product u max_area is rounded to a multiple of 2^-1074)
+  const double tiny = 2 * std::numeric_limits<double>::denorm_min();
+  PDS::internal::Active_fragment_pool<int> slivers(3 * std::numeric_limits<double>::denorm_min());
+  slivers.push(0, tiny);
+  slivers.begin_batch();
+  int kept = 0;
+  for(int k = 0; k < draws; ++k) kept += slivers.accepts(slivers.draw(rng), tiny, rng.uniform());
+  const double q = 2. / 3, tau = std::sqrt(draws * q * (1 - q));
+  EXPECT_NEAR(kept, draws * q, 5 * tau);
 }
 
 // A batch takes many entries of the same bins, some twice, while children are pushed: at its end

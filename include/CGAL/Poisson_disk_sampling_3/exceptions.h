@@ -31,7 +31,7 @@ public:
 /// while sampling (thin or scattered surfaces can exceed the estimate). Also thrown, before any piece
 /// is stored, when long thin triangles would be cut into more pieces beyond one per face than four
 /// times that bound plus six per face, the memory those take (`Triangle_fragment_traits_3`); and
-/// while sampling, if more than 2^32 fragments of about the same area would be active at once (only
+/// while sampling, if 2^32 or more fragments of about the same area would be active at once (only
 /// with the bound raised far above its default).
 class Point_limit_exceeded : public std::length_error
 {

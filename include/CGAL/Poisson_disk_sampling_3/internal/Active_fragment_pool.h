@@ -52,7 +52,8 @@ public:
   };
 
   explicit Active_fragment_pool(double max_area)
-    : max_area_(max_area), max_exponent_(std::ilogb(max_area)), normal_bins_(max_exponent_ + 1023)
+    : max_area_(max_area), max_exponent_(std::ilogb(max_area)),
+      max_mantissa_(std::ldexp(max_area, -max_exponent_)), normal_bins_(max_exponent_ + 1023)
   {
     CGAL_precondition(max_area > 0 && std::isfinite(max_area));
   }
@@ -72,8 +73,8 @@ public:
     // a handle holds an index within its bin in 32 bits; the engine's bounds keep a pool far below
     // this unless maximum_number_of_points is raised beyond a billion
     if(bins_[b].size() >= std::numeric_limits<std::uint32_t>::max())
-      throw Point_limit_exceeded("more than 2^32 active fragments of about the same area; use a larger "
-                                 "distance or fewer points");
+      throw Point_limit_exceeded("2^32 - 1 active fragments of about the same area, the most a bin holds; "
+                                 "use a larger distance or fewer points");
     bins_[b].push_back(item);
     if(size_ == 0 || b < first_) first_ = b;
     if(size_ == 0 || b > last_) last_ = b;
@@ -113,8 +114,9 @@ public:
   {
     CGAL_precondition(bin_of(area) == h.bin);
     if(int(h.bin) < normal_bins_) return u * bounds_[h.bin] < area;
-    // a bound below the normal doubles is rounded: compare with the area scaled up, exactly
-    return u * max_area_ < std::ldexp(area, int(h.bin));
+    // a bound below the normal doubles is rounded: compare both sides scaled up by the same power of
+    // two, exactly (the bin is at least max_exponent_ + 1023, so the area is scaled up)
+    return u * max_mantissa_ < std::ldexp(area, int(h.bin) - max_exponent_);
   }
 
   void prefetch(const Handle& h) const { internal::prefetch(&bins_[h.bin][h.index]); }
@@ -245,7 +247,8 @@ private:
   double bound(std::size_t b) const { return b < bounds_.size() ? bounds_[b] : bin_bound(b); }
 
   double max_area_;
-  int max_exponent_; // std::ilogb(max_area_)
+  int max_exponent_;    // std::ilogb(max_area_)
+  double max_mantissa_; // max_area_ 2^-max_exponent_, in [1, 2) even where max_area_ is subnormal
   int normal_bins_; // bins 0 to normal_bins_ - 1 have bounds max_area_ 2^-b that are normal doubles
   std::vector<Chunked_array> bins_;
   std::vector<double> bounds_; // bin_bound(b), so that a pick calls no ldexp
