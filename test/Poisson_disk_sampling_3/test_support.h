@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <string>
@@ -77,7 +78,7 @@ inline bool is_closer_than(const Point& p, const Point& q, double d)
 class Test_grid
 {
 public:
-  Test_grid(const std::vector<Point>& points, double cell) : points_(points), cell_(cell)
+  Test_grid(const std::vector<Point>& points, double cell) : cell_(cell)
   {
     for(std::size_t i = 0; i < points.size(); ++i) cells_[key(points[i])].push_back(i);
   }
@@ -108,7 +109,6 @@ private:
     return k;
   }
 
-  const std::vector<Point>& points_;
   double cell_;
   std::map<std::array<long long, 3>, std::vector<std::size_t>> cells_;
 };
@@ -154,13 +154,20 @@ template <class Surface>
 std::size_t expect_probes_covered(const Surface& surface, const std::vector<Point>& points, double d,
                                   std::size_t probes, unsigned seed = 7)
 {
-  const Test_grid grid(points, d);
+  // a probe is off the surface by a few units in the last place of its coordinates
+  const std::vector<Point> probe = probe_points(surface, probes, seed);
+  auto slack = [&](const Point& q) {
+    return 1e-9 * d + 1e-14 * (std::abs(q.x()) + std::abs(q.y()) + std::abs(q.z()));
+  };
+  double largest_slack = 0;
+  for(const Point& q : probe) largest_slack = (std::max)(largest_slack, slack(q));
+  // cells at least as wide as the farthest distance tested, with room for the rounding of the sum
+  const Test_grid grid(points, (d + largest_slack) * (1 + 1e-12));
   std::size_t far = 0;
-  for(const Point& q : probe_points(surface, probes, seed)) {
-    // a probe is off the surface by a few units in the last place of its coordinates
-    const double slack = 1e-9 * d + 1e-14 * (std::abs(q.x()) + std::abs(q.y()) + std::abs(q.z()));
+  for(const Point& q : probe) {
+    const double reach = d + slack(q);
     bool covered = false;
-    grid.for_each_near(q, [&](std::size_t i) { covered = covered || is_closer_than(q, points[i], d + slack); });
+    grid.for_each_near(q, [&](std::size_t i) { covered = covered || is_closer_than(q, points[i], reach); });
     if(!covered && far++ == 0) ADD_FAILURE() << "probe " << q << " is farther than " << d << " from every sample";
   }
   return far;

@@ -91,9 +91,10 @@ Poisson_disk_check is_poisson_disk_set(const PointRange& points, double minimum_
   internal::check_distance(minimum_distance);
   std::vector<double> xyz = internal::coordinates_of(points);
   double d = minimum_distance;
-  // Below 2^-400 (and the samplers refuse such distances) the grid's 1 / cell would overflow: the
-  // coordinates and d are scaled up by one power of two, which is exact (or overflows, for
-  // coordinates that the grid refuses anyway) and leaves every comparison of distances as it was.
+  // Distances below 2^-400 (which the samplers refuse) are scaled up: under about 2.8e-309 the grid's
+  // 1 / cell would overflow. The coordinates and d are multiplied by one power of two, which is exact
+  // (or overflows, for coordinates that the grid refuses anyway) and leaves every comparison of
+  // distances as it was.
   if(d < 0x1.0p-400) {
     const int e = -std::ilogb(d);
     for(double& c : xyz) c = std::ldexp(c, e);
