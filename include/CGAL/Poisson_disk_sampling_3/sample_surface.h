@@ -114,16 +114,6 @@ std::size_t read_max_points(const NamedParameters& np)
   return to_size(m);
 }
 
-// summed as the roots are made, not stored (24 bytes a face: 80 MB on a mesh of 3.3 million faces)
-template <class Traits>
-double total_area(const Traits& traits)
-{
-  double a = 0;
-  auto add = [&](const typename Traits::Fragment& f) { a += traits.area(f); };
-  traits.initial_fragments(Calling_output(&add));
-  return a;
-}
-
 /// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted. With
 /// `check_expected_count` false, the run does not refuse the distance up front (see
 /// `Dart_throwing_engine::set_expected_count_check()`).

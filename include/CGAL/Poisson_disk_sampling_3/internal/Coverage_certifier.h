@@ -49,11 +49,9 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
 
   // the roots are made as they are certified, one at a time: a long face's pieces are not stored
-  double total_area = 0;
-  auto add_area = [&](const Fragment& f) { total_area += traits.area(f); };
-  traits.initial_fragments(Calling_output(&add_area));
-  check_surface_area(total_area, "certify");
-  const double leaf_area = (std::max)(d * d / 64, total_area * 0x1.0p-20);
+  const double surface_area = total_area(traits);
+  check_surface_area(surface_area, "certify");
+  const double leaf_area = (std::max)(d * d / 64, surface_area * 0x1.0p-20);
   const double defer_area = d * d * 0x1.0p-24;
 
   Certificate result;
