@@ -29,6 +29,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <new>
 #include <optional>
 #include <cmath>
@@ -36,6 +38,10 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace {
 
@@ -73,6 +79,60 @@ struct Heap_peak
   Heap_peak() { peak_bytes = base; }
   double bytes() const { return double(peak_bytes.load() - base); }
 };
+
+// Resident memory, where the system tells it (Linux): the peak resident set of the process since the
+// reset, above the resident set at the reset, less the file pages that became resident meanwhile (the
+// program's code first run during the call, a few hundred kilobytes: memory, but not the data that
+// grows with points and faces). The reset first returns the allocator's free pages to the system
+// (glibc's malloc_trim), so that pages an earlier case freed and this one reuses count again, then
+// resets the kernel's record of the peak (VmHWM) by writing 5 to /proc/self/clear_refs. Pages, not
+// bytes: a reserved array whose end is never written is not resident, so this can be below the heap
+// peak. bytes() is negative where it cannot be measured; the cases then report no resident counters.
+long long status_kilobytes(const char* key)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  const std::size_t length = std::strlen(key);
+  while(std::getline(status, line))
+    if(line.compare(0, length, key) == 0 && line.size() > length && line[length] == ':')
+      return std::atoll(line.c_str() + length + 1);
+  return -1;
+}
+
+struct Resident_peak
+{
+  long long base = -1, base_files = -1;
+  Resident_peak()
+  {
+#if defined(__linux__)
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+    std::ofstream reset("/proc/self/clear_refs");
+    reset << "5" << std::flush;
+    if(reset) {
+      base = status_kilobytes("VmRSS");
+      base_files = status_kilobytes("RssFile");
+    }
+#endif
+  }
+  // read after Heap_peak::bytes(): reading the status allocates
+  double bytes() const
+  {
+    if(base < 0 || base_files < 0) return -1;
+    const long long peak = status_kilobytes("VmHWM"), files = status_kilobytes("RssFile");
+    if(peak < 0 || files < 0) return -1;
+    return 1024 * double(peak - base - (files - base_files));
+  }
+};
+
+// the resident counters of a case, if resident memory could be measured
+void report_resident(benchmark::State& state, double resident, double n, double budget)
+{
+  if(resident < 0) return;
+  state.counters["peak_resident_bytes_per_point"] = resident / n;
+  state.counters["resident_budget_use"] = resident / budget;
+}
 
 // The white-noise floor: the fastest of five runs of `draw(points)`, which writes n uniform random
 // points into `points` (reserved for them): a run this short is easily disturbed, and the minimum makes
@@ -135,16 +195,18 @@ void mesh_case(benchmark::State& state, const std::string& name)
   const double area = PMP::area(m);
   const double d = distance_for(area, double(state.range(0)));
   std::vector<Point> points;
-  double seconds = 0, peak = 0;
+  double seconds = 0, peak = 0, resident = 0;
   PDS::Sampling_statistics stats;
   for(auto _ : state) {
     points.clear();
     points.shrink_to_fit();
+    const Resident_peak pages;
     const Heap_peak heap;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
     peak = heap.bytes();
+    resident = pages.bytes();
     state.SetIterationTime(seconds);
   }
   if(!validate(state, m, points, d)) return;
@@ -156,6 +218,7 @@ void mesh_case(benchmark::State& state, const std::string& name)
   state.counters["faces_per_second"] = faces / seconds;
   state.counters["peak_heap_bytes_per_point"] = peak / n; // the mesh was allocated before: not counted
   state.counters["memory_budget_use"] = peak / (200 * n + 300 * faces); // <= 1 is the target
+  report_resident(state, resident, n, 200 * n + 300 * faces);
   state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / n;
   state.counters["floor_seconds"] = floor;
   state.counters["floor_ratio"] = seconds / floor;
@@ -177,15 +240,17 @@ void sphere_case(benchmark::State& state)
   const double d = distance_for(4 * 3.14159265358979323846, double(state.range(0)));
   std::vector<Point> points;
   PDS::Sampling_statistics stats;
-  double seconds = 0, peak = 0;
+  double seconds = 0, peak = 0, resident = 0;
   for(auto _ : state) {
     points.clear();
     points.shrink_to_fit();
+    const Resident_peak pages;
     const Heap_peak heap;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
     peak = heap.bytes();
+    resident = pages.bytes();
     state.SetIterationTime(seconds);
   }
   if(!validate(state, sphere, points, d)) return;
@@ -197,6 +262,7 @@ void sphere_case(benchmark::State& state)
   state.counters["darts_per_point"] = double(stats.darts) / n;
   state.counters["peak_heap_bytes_per_point"] = peak / n;
   state.counters["memory_budget_use"] = peak / (200 * n); // no faces: 200 bytes a point
+  report_resident(state, resident, n, 200 * n);
   state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / n;
   state.counters["floor_seconds"] = floor;
   state.counters["floor_ratio"] = seconds / floor;
@@ -283,15 +349,17 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
   const double d = distance_for(PMP::area(m), double(state.range(0)));
   PDS::Sampling_statistics stats;
   std::size_t n = 0;
-  double peak = 0;
+  double peak = 0, resident = 0;
   for(auto _ : state) {
     n = 0;
+    const Resident_peak pages;
     const Heap_peak heap;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, boost::make_function_output_iterator([&](const auto&) { ++n; }),
                               PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     state.SetIterationTime(seconds_since(start));
     peak = heap.bytes();
+    resident = pages.bytes();
   }
   if(!std::getenv("PDS_BENCH_PROFILE")) {
     std::vector<Point> points;
@@ -307,6 +375,7 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
   // the sampler's own heap: the points are counted, not stored (the other cases store them)
   state.counters["peak_heap_bytes_per_point"] = peak / double(n);
   state.counters["memory_budget_use"] = peak / (200 * double(n) + 300 * double(num_faces(m)));
+  report_resident(state, resident, double(n), 200 * double(n) + 300 * double(num_faces(m)));
 }
 
 // The triangle model without its optional union test and refine(): the operations the concept
