@@ -116,7 +116,6 @@ struct Resident_peak
     }
 #endif
   }
-  // read after Heap_peak::bytes(): reading the status allocates
   double bytes() const
   {
     if(base < 0 || base_files < 0) return -1;
@@ -126,9 +125,26 @@ struct Resident_peak
   }
 };
 
-// the resident counters of a case, if resident memory could be measured
-void report_resident(benchmark::State& state, double resident, double n, double budget)
+// Both peaks of what runs between construction and read(), taken in the order they need: the resident
+// reset allocates, so it comes before the heap's base is read; reading the status allocates, so it
+// comes after the heap's peak is read.
+struct Memory_peak
 {
+  const Resident_peak pages;
+  const Heap_peak heap;
+  void read(double& heap_bytes, double& resident_bytes) const
+  {
+    heap_bytes = heap.bytes();
+    resident_bytes = pages.bytes();
+  }
+};
+
+// The memory counters of a case against its budget (<= 1 is the target): the heap, whose peak does not
+// count the mesh, allocated before; and the resident pages, if they could be measured.
+void report_memory(benchmark::State& state, double heap, double resident, double n, double budget)
+{
+  state.counters["peak_heap_bytes_per_point"] = heap / n;
+  state.counters["memory_budget_use"] = heap / budget;
   if(resident < 0) return;
   state.counters["peak_resident_bytes_per_point"] = resident / n;
   state.counters["resident_budget_use"] = resident / budget;
@@ -200,13 +216,11 @@ void mesh_case(benchmark::State& state, const std::string& name)
   for(auto _ : state) {
     points.clear();
     points.shrink_to_fit();
-    const Resident_peak pages;
-    const Heap_peak heap;
+    const Memory_peak memory;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
-    peak = heap.bytes();
-    resident = pages.bytes();
+    memory.read(peak, resident);
     state.SetIterationTime(seconds);
   }
   if(!validate(state, m, points, d)) return;
@@ -216,9 +230,7 @@ void mesh_case(benchmark::State& state, const std::string& name)
   state.counters["seconds"] = seconds;
   state.counters["points_per_second"] = n / seconds;
   state.counters["faces_per_second"] = faces / seconds;
-  state.counters["peak_heap_bytes_per_point"] = peak / n; // the mesh was allocated before: not counted
-  state.counters["memory_budget_use"] = peak / (200 * n + 300 * faces); // <= 1 is the target
-  report_resident(state, resident, n, 200 * n + 300 * faces);
+  report_memory(state, peak, resident, n, 200 * n + 300 * faces);
   state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / n;
   state.counters["floor_seconds"] = floor;
   state.counters["floor_ratio"] = seconds / floor;
@@ -244,13 +256,11 @@ void sphere_case(benchmark::State& state)
   for(auto _ : state) {
     points.clear();
     points.shrink_to_fit();
-    const Resident_peak pages;
-    const Heap_peak heap;
+    const Memory_peak memory;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     seconds = seconds_since(start);
-    peak = heap.bytes();
-    resident = pages.bytes();
+    memory.read(peak, resident);
     state.SetIterationTime(seconds);
   }
   if(!validate(state, sphere, points, d)) return;
@@ -260,9 +270,7 @@ void sphere_case(benchmark::State& state)
   state.counters["seconds"] = seconds;
   state.counters["points_per_second"] = n / seconds;
   state.counters["darts_per_point"] = double(stats.darts) / n;
-  state.counters["peak_heap_bytes_per_point"] = peak / n;
-  state.counters["memory_budget_use"] = peak / (200 * n); // no faces: 200 bytes a point
-  report_resident(state, resident, n, 200 * n);
+  report_memory(state, peak, resident, n, 200 * n); // no faces: 200 bytes a point
   state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / n;
   state.counters["floor_seconds"] = floor;
   state.counters["floor_ratio"] = seconds / floor;
@@ -352,14 +360,12 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
   double peak = 0, resident = 0;
   for(auto _ : state) {
     n = 0;
-    const Resident_peak pages;
-    const Heap_peak heap;
+    const Memory_peak memory;
     const auto start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, boost::make_function_output_iterator([&](const auto&) { ++n; }),
                               PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
     state.SetIterationTime(seconds_since(start));
-    peak = heap.bytes();
-    resident = pages.bytes();
+    memory.read(peak, resident);
   }
   if(!std::getenv("PDS_BENCH_PROFILE")) {
     std::vector<Point> points;
@@ -373,9 +379,7 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
   state.counters["points"] = double(n);
   state.counters["darts_per_point"] = double(stats.darts) / double(n);
   // the sampler's own heap: the points are counted, not stored (the other cases store them)
-  state.counters["peak_heap_bytes_per_point"] = peak / double(n);
-  state.counters["memory_budget_use"] = peak / (200 * double(n) + 300 * double(num_faces(m)));
-  report_resident(state, resident, double(n), 200 * double(n) + 300 * double(num_faces(m)));
+  report_memory(state, peak, resident, double(n), 200 * double(n) + 300 * double(num_faces(m)));
 }
 
 // The triangle model without its optional union test and refine(): the operations the concept
