@@ -57,7 +57,7 @@ inline void check_distance(double d)
 /// a grid of the given points with cells of side 2d. Refuses a distance below 2^-44 of the largest
 /// |coordinate| m: a query's box is widened by 1e-15 m for the rounding of its corners, which beyond
 /// about 2^50 d would span many cells per query (a thousand on each axis at 2^60 d; at 2^63 d the cell
-/// indices reach the 2^62 that grid_cell() refuses); and refuses m + d beyond the doubles' range,
+/// indices reach the 2^62 that grid_cell() refuses); and refuses m + 4d beyond the doubles' range,
 /// where the boxes' corners would be infinite.
 inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
 {

@@ -36,9 +36,9 @@ namespace internal {
 /// accesses can overlap. `take()` marks a drawn fragment for removal at `end_batch()`; `push()` may be
 /// called at any time.
 ///
-/// Memory: a bin stores its fragments in chunks of 256, so that the pool never holds more than a
-/// chunk of free room per bin and never copies a bin to grow it (a doubling vector holds up to twice
-/// its contents, three times while it moves). The areas are not stored: the caller passes the
+/// Memory: a bin stores its fragments in chunks of 256, so that the pool never holds more than two
+/// chunks of free room per bin (one is kept in reserve) and never copies a bin to grow it (a
+/// doubling vector holds up to twice its contents, three times while it moves). The areas are not stored: the caller passes the
 /// fragment's area to `accepts()` (the engine computes it from the model, which the dart reads anyway).
 template <class Item>
 class Active_fragment_pool

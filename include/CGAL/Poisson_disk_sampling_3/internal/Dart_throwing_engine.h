@@ -43,7 +43,7 @@ enum Engine_stage {
   fragment_stage, // reads the entries; starts loading what random_sample() reads
   sample_stage,   // the pool's rejection step, random_sample(), the cell; starts loading hash slots
   bucket_stage,   // the hash probes; starts loading the bucket headers
-  points_stage,   // starts loading the buckets' first points
+  points_stage,   // starts loading the buckets' points (every cache line, up to 16)
   scan_stage,     // the bucket scans and the exact test of each dart
   accept_stage,   // the darts judged in order
   insert_stage,   // the batch's samples copied into their buckets
@@ -91,7 +91,7 @@ struct Engine_statistics
   std::size_t samples = 0;            // darts accepted
   std::size_t dropped_at_max_depth = 0; // uncovered fragments dropped at the depth floor
   std::size_t darts_on_covered = 0;     // rejected darts whose fragment proved entirely covered
-  std::size_t peak_active = 0;          // the most fragments in the pool at once
+  std::size_t peak_active = 0;          // the most fragments in the pool at the start of a batch
   std::array<double, number_of_stages> stage_seconds{}; // see Stage_clock: zeros unless it is on
 };
 

@@ -19,7 +19,7 @@ namespace internal {
 /// (about 3.9e-121 to 2.6e120). The coverage tests bound their rounding errors relative to the
 /// numbers they compute; that holds while squares of distances stay normal doubles, far from the
 /// subnormal range (below 2^-1022, where the error of a square is absolute) and from overflow. The
-/// samplers also require the coordinates to be within 2^30 D of each other (`position_error()`), so
+/// samplers also require the coordinates to be below 2^30 D in magnitude (`position_error()`), so
 /// their squares stay below 2^862.
 constexpr double smallest_minimum_distance = 0x1.0p-400;
 constexpr double largest_minimum_distance = 0x1.0p+400;
