@@ -268,9 +268,7 @@ public:
   /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
   void prefetch(const Fragment& f) const
   {
-    const Face* face = &faces_[f.face];
-    internal::prefetch(face);
-    internal::prefetch(&face->e2); // the record spans two cache lines
+    internal::prefetch_object(&faces_[f.face]); // 88 bytes: two or three cache lines
   }
 
   /// the four children of the midpoint subdivision

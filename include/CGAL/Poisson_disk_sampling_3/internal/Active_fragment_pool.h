@@ -119,7 +119,7 @@ public:
     return u * max_mantissa_ < std::ldexp(area, int(h.bin) - max_exponent_);
   }
 
-  void prefetch(const Handle& h) const { internal::prefetch(&bins_[h.bin][h.index]); }
+  void prefetch(const Handle& h) const { internal::prefetch_object(&bins_[h.bin][h.index]); }
 
   const Item& item(const Handle& h) const { return bins_[h.bin][h.index]; }
 

@@ -67,7 +67,7 @@ public:
   void prefetch_slot(const Cell& c) const { cells_.prefetch(c.x, c.y, c.z); }
   static void prefetch_header(const std::vector<Point>* bucket)
   {
-    if(bucket) internal::prefetch(bucket);
+    if(bucket) internal::prefetch_object(bucket);
   }
   static void prefetch_points(const std::vector<Point>* bucket)
   {

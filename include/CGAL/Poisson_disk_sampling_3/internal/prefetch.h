@@ -31,6 +31,20 @@ inline void prefetch(const void* p)
 #endif
 }
 
+/// Asks for every cache line of the object at `p`. An object of up to 64 bytes can cross the end of
+/// a line (24-byte pool entries and bucket headers, in arrays, do at two places in eight): the lines
+/// of its first and last bytes are all of its lines. One of up to 128 bytes (a triangle's face
+/// record) can span three: the line 64 bytes after its first byte is the third.
+template <class T>
+inline void prefetch_object(const T* p)
+{
+  static_assert(sizeof(T) <= 128, "objects of more than 128 bytes can span more than three lines");
+  const char* first = reinterpret_cast<const char*>(p);
+  prefetch(first);
+  if constexpr(sizeof(T) > 64) prefetch(first + 64);
+  prefetch(first + (sizeof(T) - 1));
+}
+
 } // namespace internal
 } // namespace Poisson_disk_sampling_3
 } // namespace CGAL
