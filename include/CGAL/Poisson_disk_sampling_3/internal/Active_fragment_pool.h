@@ -38,8 +38,9 @@ namespace internal {
 ///
 /// Memory: a bin stores its fragments in chunks of 256, so that the pool never holds more than two
 /// chunks of free room per bin (one is kept in reserve) and never copies a bin to grow it (a
-/// doubling vector holds up to twice its contents, three times while it moves). The areas are not stored: the caller passes the
-/// fragment's area to `accepts()` (the engine computes it from the model, which the dart reads anyway).
+/// doubling vector holds up to twice its contents, three times while it moves). The areas are not
+/// stored: the caller passes the fragment's area to `accepts()` (the engine computes it from the
+/// model, which the dart reads anyway).
 template <class Item>
 class Active_fragment_pool
 {

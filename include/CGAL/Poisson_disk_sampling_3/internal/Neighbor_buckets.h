@@ -24,8 +24,8 @@ namespace internal {
 /// in one contiguous bucket, a copy of every sample within `reach` of the cell, so a query reads one
 /// bucket: one hash probe and a sequential scan. (A grid of single copies, as `Point_hash_grid`, has
 /// the query visit eight cells, each a hash probe and a range elsewhere in memory: on large sets
-/// each is a cache miss.) A sample is copied into the cells that meet the cube of half-side `reach` around it,
-/// (1 + 2 / cell_factor)^3 of them on average: memory stays O(samples).
+/// each is a cache miss.) A sample is copied into the cells that meet the cube of half-side `reach`
+/// around it, (1 + 2 / cell_factor)^3 of them on average: memory stays O(samples).
 class Neighbor_buckets
 {
 public:
