@@ -110,7 +110,7 @@ public:
     for(Copy& c : copies_) {
       c.bucket = cells_.find_or_insert(c.cell.x, c.cell.y, c.cell.z, std::uint32_t(buckets_.size()));
       if(c.bucket == buckets_.size()) buckets_.emplace_back();
-      internal::prefetch(&buckets_[c.bucket]);
+      prefetch_header(&buckets_[c.bucket]);
     }
     for(const Copy& c : copies_) {
       const std::vector<Point>& b = buckets_[c.bucket];
