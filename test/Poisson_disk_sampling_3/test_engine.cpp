@@ -552,20 +552,62 @@ TEST(TriangleFragments, UnionCoverageNeverClaimsAnUncoveredPoint)
 // those of is_covered(), split() and is_covered_by_union() called one by one, on fragments of every
 // level and orientation, near the origin and far from it, with balls that cover a fragment, some of
 // its children, or none.
-TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
+// The parameters of corner j of a triangle fragment, from its public members
+std::array<double, 2> corner_parameters(const PDS::Triangle_fragment_traits_3::Fragment& f, int j)
+{
+  if(j == 0) return {{f.u, f.v}};
+  const int l = -int(f.level);
+  return {{f.u + std::ldexp(double(f.e[j - 1][0]), l), f.v + std::ldexp(double(f.e[j - 1][1]), l)}};
+}
+
+typedef PDS::Triangle_fragment_traits_3 Triangles;
+std::array<Triangles::Point, 3> fragment_corners(const Triangles& traits, const Triangles::Fragment& f)
+{
+  std::array<Triangles::Point, 3> c;
+  for(int j = 0; j < 3; ++j) {
+    const std::array<double, 2> q = corner_parameters(f, j);
+    c[j] = point_at(traits, f, q[0], q[1]);
+  }
+  return c;
+}
+
+// barycentric coordinates of x with respect to triangle t, in a parameter plane
+std::array<double, 3> barycentric(const std::array<std::array<double, 2>, 3>& t, const std::array<double, 2>& x)
+{
+  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  const double area = cross(t[0], t[1], t[2]);
+  return {{cross(x, t[1], t[2]) / area, cross(t[0], x, t[2]) / area, cross(t[0], t[1], x) / area}};
+}
+
+// The triangle model's step for a fragment that got a dart: returns whether one ball of `near` covers
+// it (as is_covered() decides), and otherwise writes fragments, of positive area, inside it, that
+// overlap nowhere and hold every point of it that no ball covers; where it splits, they are the
+// children that split() makes and the single-ball and union tests keep, in the same order. Random
+// fragments, whole or pieces of long thin faces, some of them pieces that the step cut off before
+// (down to ten steps deep), with 0 to 6 balls; 64 random points of each are located in the pieces.
+// Both ways of the step (children and pieces cut along a chord) are taken often.
+TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;
   typedef Traits::Fragment Fragment;
+  typedef Traits::Point P;
   Random rng(29);
   Refine_counts counts;
+  int cut = 0, deep = 0;
+  auto same = [](const Fragment& a, const Fragment& b) {
+    return a.u == b.u && a.v == b.v && a.face == b.face && a.level == b.level && a.piece == b.piece &&
+           a.e[0][0] == b.e[0][0] && a.e[0][1] == b.e[0][1] && a.e[1][0] == b.e[1][0] && a.e[1][1] == b.e[1][1];
+  };
   for(int trial = 0; trial < 4000; ++trial) {
     Traits traits;
     const double offset = trial % 2 ? 0. : 500.;
-    auto rnd = [&]() { return Traits::Point{{offset + rng.uniform(), offset + rng.uniform(), offset + 0.3 * rng.uniform()}}; };
+    auto rnd = [&]() { return P{{offset + rng.uniform(), offset + rng.uniform(), offset + 0.3 * rng.uniform()}}; };
     // every other trial, a long thin triangle (a needle or a cap) cut into pieces for a distance
     const bool thin = trial % 4 >= 2;
     auto rnd_thin = [&]() {
-      return Traits::Point{{offset + 4 * rng.uniform(), offset + 0.05 * rng.uniform(), offset + 0.01 * rng.uniform()}};
+      return P{{offset + 4 * rng.uniform(), offset + 0.05 * rng.uniform(), offset + 0.01 * rng.uniform()}};
     };
     if(thin) traits.add_triangle(rnd_thin(), rnd_thin(), rnd_thin());
     else traits.add_triangle(rnd(), rnd(), rnd());
@@ -573,31 +615,107 @@ TEST(TriangleFragments, RefineAgreesWithTheOperationsItReplaces)
     if(thin) traits.initial_fragments(std::back_inserter(roots), 0.01 + 0.3 * rng.uniform());
     else traits.initial_fragments(std::back_inserter(roots));
     if(roots.empty()) continue;
-    const Fragment f =
-        random_descendant(traits, roots[rng.uniform_index(roots.size())], int(rng.uniform_index(8)), rng);
+    Fragment f = random_descendant(traits, roots[rng.uniform_index(roots.size())], int(rng.uniform_index(8)), rng);
+
     // balls around f's centroid, of a radius of the order of f's size (from a few of its points)
-    const Traits::Point g = traits.reference_point(f);
-    double size = 0;
-    for(int i = 0; i < 8; ++i) {
-      const Traits::Point q = traits.random_sample(f, rng)->point;
-      size = std::max(size, 2 * std::hypot(q[0] - g[0], q[1] - g[1], q[2] - g[2]));
-    }
-    const double radius = size * (0.2 + 0.8 * rng.uniform());
-    std::vector<std::array<double, 3>> near, around;
-    const int k = int(rng.uniform_index(7));
-    for(int i = 0; i < k; ++i) {
-      std::array<double, 3> c;
-      for(int j = 0; j < 3; ++j) c[j] = g[j] + 1.6 * radius * (rng.uniform() - 0.5);
-      around.push_back(c);
-      if(rng.uniform() < 0.6) near.push_back(c);
-    }
-    auto same = [](const Fragment& a, const Fragment& b) {
-      return a.u == b.u && a.v == b.v && a.face == b.face && a.level == b.level && a.inverted == b.inverted &&
-             a.piece == b.piece;
+    auto balls = [&](const Fragment& g0, std::vector<P>& near, std::vector<P>& around, double& radius) {
+      const P g = traits.reference_point(g0);
+      double size = 0;
+      for(int i = 0; i < 8; ++i) {
+        const P q = traits.random_sample(g0, rng)->point;
+        size = std::max(size, 2 * std::hypot(q[0] - g[0], q[1] - g[1], q[2] - g[2]));
+      }
+      radius = size * (0.2 + 0.8 * rng.uniform());
+      near.clear();
+      around.clear();
+      const int k = int(rng.uniform_index(7));
+      for(int i = 0; i < k; ++i) {
+        P c;
+        for(int j = 0; j < 3; ++j) c[j] = g[j] + 1.6 * radius * (rng.uniform() - 0.5);
+        around.push_back(c);
+        if(rng.uniform() < 0.6) near.push_back(c);
+      }
     };
-    expect_refine_agrees(traits, f, near, around, radius, same, counts, trial);
+    std::vector<P> near, around;
+    double radius;
+    // a third of the time, a piece that earlier steps left, up to ten of them
+    if(trial % 3 == 0)
+      for(int step = 0; step < 10; ++step) {
+        balls(f, near, around, radius);
+        std::vector<Fragment> kept;
+        if(traits.refine(f, near, around, radius, std::back_inserter(kept)) || kept.empty()) break;
+        f = kept[rng.uniform_index(kept.size())];
+        deep += step == 9;
+      }
+    balls(f, near, around, radius);
+
+    bool expected_covered = false;
+    for(const P& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
+    std::vector<Fragment> expected; // what splitting keeps
+    if(!expected_covered) {
+      std::vector<Fragment> children;
+      traits.split(f, std::back_inserter(children));
+      for(const Fragment& c : children) {
+        bool single = false;
+        for(const P& b : near) single = single || traits.is_covered(c, b, radius);
+        if(!single && traits.area(c) > 0 && !traits.is_covered_by_union(c, around, radius)) expected.push_back(c);
+      }
+    }
+    std::vector<Fragment> got;
+    const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
+    ASSERT_EQ(covered, expected_covered) << "trial " << trial;
+    counts.parent_covered += covered;
+    if(covered) {
+      EXPECT_TRUE(got.empty());
+      continue;
+    }
+    std::vector<Fragment> children;
+    traits.split(f, std::back_inserter(children));
+    const bool split = std::all_of(got.begin(), got.end(), [&](const Fragment& g) {
+      return std::any_of(children.begin(), children.end(), [&](const Fragment& c) { return same(g, c); });
+    });
+    if(split && !got.empty()) { // the same as the operations it replaces
+      ++counts.child_kept;
+      ASSERT_EQ(got.size(), expected.size()) << "trial " << trial;
+      for(std::size_t i = 0; i < got.size(); ++i) EXPECT_TRUE(same(got[i], expected[i])) << "trial " << trial;
+    }
+    cut += !split;
+
+    // in the piece's parameters, relative to f's first corner (exact for the corners, on a lattice)
+    typedef std::array<double, 2> Q;
+    const Q o = corner_parameters(f, 0);
+    auto rel = [&](const Q& q) { return Q{{q[0] - o[0], q[1] - o[1]}}; };
+    const std::array<Q, 3> tf = {
+        {rel(corner_parameters(f, 0)), rel(corner_parameters(f, 1)), rel(corner_parameters(f, 2))}};
+    std::vector<std::array<Q, 3>> tg;
+    for(const Fragment& g : got) {
+      EXPECT_GT(traits.area(g), 0) << "trial " << trial;
+      EXPECT_GE(traits.level(g), traits.level(f)) << "trial " << trial;
+      tg.push_back({{rel(corner_parameters(g, 0)), rel(corner_parameters(g, 1)), rel(corner_parameters(g, 2))}});
+      for(const Q& c : tg.back())
+        for(double l : barycentric(tf, c)) EXPECT_GE(l, 0.) << "trial " << trial; // inside f
+    }
+    for(int i = 0; i < 64; ++i) {
+      double a = rng.uniform(), b = rng.uniform();
+      if(a + b > 1) a = 1 - a, b = 1 - b;
+      const Q x{{a * tf[1][0] + b * tf[2][0], a * tf[1][1] + b * tf[2][1]}};
+      const P px = point_at(traits, f, o[0] + x[0], o[1] + x[1]);
+      double nearest = std::numeric_limits<double>::infinity();
+      for(const P& c : around) nearest = std::min(nearest, std::hypot(px[0] - c[0], px[1] - c[1], px[2] - c[2]));
+      int in = 0, strictly_in = 0;
+      for(const auto& t : tg) {
+        const std::array<double, 3> l = barycentric(t, x);
+        in += l[0] >= -1e-9 && l[1] >= -1e-9 && l[2] >= -1e-9;
+        strictly_in += l[0] > 1e-9 && l[1] > 1e-9 && l[2] > 1e-9;
+      }
+      EXPECT_LE(strictly_in, 1) << "trial " << trial; // the pieces overlap nowhere
+      if(in == 0) EXPECT_LE(nearest, radius * (1 + 1e-9)) << "trial " << trial; // left out: covered
+    }
   }
-  expect_every_branch_taken(counts);
+  EXPECT_GT(counts.parent_covered, 200);
+  EXPECT_GT(counts.child_kept, 500);
+  EXPECT_GT(cut, 300);
+  EXPECT_GT(deep, 20);
 }
 
 // The pieces of a long thin triangle (for a minimum distance D) tile it: their areas add up to the
@@ -652,9 +770,7 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
       EXPECT_LE(traits.level(f), 12);
       EXPECT_GT(traits.area(f), 0);
       total += traits.area(f);
-      const double h = f.inverted ? -1. : 1.;
-      corners.push_back({{point_at(traits, f, f.u, f.v), point_at(traits, f, f.u + h, f.v),
-                          point_at(traits, f, f.u, f.v + h)}});
+      corners.push_back(fragment_corners(traits, f));
       {
         // its area is the area of its corners' triangle
         const auto& c = corners.back();

@@ -84,7 +84,7 @@ public:
   /// the numbers of halvings of its two ranges. The engine stops splitting at depth 40, the
   /// certificate at 48; without this operation both count the splits. A model whose fragments carry
   /// this number spares the engine from storing it beside each active fragment (for the triangle
-  /// model, 24 bytes instead of 32; for the sphere model, 16 instead of 24).
+  /// model, 32 bytes instead of 40; for the sphere model, 16 instead of 24).
   int level(const Fragment& f) const;
 
   /// Optional. Starts loading into the cache what `random_sample(f, rng)` will read, without waiting
@@ -94,14 +94,16 @@ public:
   void prefetch(const Fragment& f) const;
 
   /// Optional. The engine's step for a fragment that got a dart, done at once: returns `true` if one
-  /// point of `near` covers `f` (as `is_covered()` decides it), and writes nothing; otherwise writes
-  /// the children of `f` (as `split()` makes them, in the same order) of positive area that no point
-  /// of `near` covers and that `is_covered_by_union(child, around, radius)` does not prove covered
-  /// (children of zero area are left out, as the engine does for `split()`). The answers must be
-  /// those of the operations it replaces, so that it changes no sample; a model defines it when it can
-  /// share work between them (`Triangle_fragment_traits_3` computes the six corners of the four
-  /// children once, and tests each ball against each of them once). `near` and `around` are
-  /// `std::vector<std::array<double, 3>>`.
+  /// point of `near` covers `f` (as `is_covered()` decides it), and writes nothing. Otherwise writes
+  /// fragments of positive area that lie in `f`, overlap nowhere, and hold every point of `f` that
+  /// the balls of radius `radius` around `near` and `around` leave uncovered, with a depth (`level()`)
+  /// no less than `f`'s. Without it the engine writes the children of `split()` of positive area that
+  /// no point of `near` covers and that `is_covered_by_union(child, around, radius)` does not prove
+  /// covered; a model defines it when it can share work between these operations
+  /// (`Sphere_fragment_traits_3` gives their answers, and so the same samples, in less time), or when
+  /// it can leave fewer fragments (`Triangle_fragment_traits_3` cuts off along a chord what one ball
+  /// holds, instead of splitting, when that ball takes a quarter of `f` or more). `near` and `around`
+  /// are `std::vector<std::array<double, 3>>`.
   template <class PointRange, class OutputIterator>
   bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
               OutputIterator children) const;

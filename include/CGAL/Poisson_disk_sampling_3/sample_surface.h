@@ -34,7 +34,7 @@ struct Sampling_statistics
   /// after the fragment was made: a dart is how the engine finds out (about half of all darts)
   std::size_t darts_on_covered_fragments = 0;
   /// the most fragments active at the start of a batch of darts in the last run: about what the
-  /// engine's pool of fragments holds at its largest (for triangles, 24 bytes each), which a batch
+  /// engine's pool of fragments holds at its largest (for triangles, 32 bytes each), which a batch
   /// exceeds by the children of its darts, at most four a dart and 256 darts, until the fragments
   /// they came from leave the pool
   std::size_t peak_active_fragments = 0;

@@ -137,8 +137,9 @@ public:
   {
     // The roots are made twice and never stored together: a first pass counts them and sums their
     // areas, so that the checks below refuse a request before anything large is allocated; a second
-    // pushes them into the pool. (A list of the roots beside the pool took 24 bytes a root at the
-    // start: 80 MB on the 3.3M-face mesh of the benchmarks, the peak when it is sampled sparsely.)
+    // pushes them into the pool. (A list of the roots beside the pool took a fragment's bytes a root at
+    // the start, 24 then: 80 MB on the 3.3M-face mesh of the benchmarks, the peak when it is sampled
+    // sparsely.)
     std::size_t roots = 0;
     double total_area = 0, max_area = 0;
     auto measure = [&](const Fragment& f) {
@@ -148,7 +149,7 @@ public:
       if(a > max_area) max_area = a;
     };
     root_fragments(traits_, d_, Calling_output(&measure));
-    // The pieces of long thin faces: each takes a pool entry of 24 bytes and its share of a chunk, and
+    // The pieces of long thin faces: each takes a pool entry of 32 bytes and its share of a chunk, and
     // four per point of the bound and six per face leave room in the memory budget, 200 bytes a sample
     // and 300 a face. With fewer roots than four per point of the bound there is nothing to refuse, and
     // the faces need not be counted.

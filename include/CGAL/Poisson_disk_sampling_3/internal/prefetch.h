@@ -32,7 +32,7 @@ inline void prefetch(const void* p)
 }
 
 /// Asks for every cache line of the object at `p`. An object of up to 64 bytes can cross the end of
-/// a line (24-byte pool entries and bucket headers, in arrays, do at two places in eight): the lines
+/// a line (24-byte bucket headers, in an array, do at two places in eight): the lines
 /// of its first and last bytes are all of its lines. One of up to 128 bytes (a triangle's face
 /// record) can span three: the line 64 bytes after its first byte is the third.
 template <class T>
