@@ -30,6 +30,33 @@ struct Refine_counts
   int parent_covered = 0, child_by_single = 0, child_by_union = 0, child_kept = 0;
 };
 
+// The engine's step for f through is_covered(), split() and is_covered_by_union() one by one, as the
+// engine takes it without refine(): returns whether one ball of `near` covers f, and otherwise writes
+// the children of positive area that neither one ball of `near` nor the union test covers
+template <class Traits>
+bool step_by_operations(const Traits& traits, const typename Traits::Fragment& f,
+                        const std::vector<std::array<double, 3>>& near,
+                        const std::vector<std::array<double, 3>>& around, double radius,
+                        std::vector<typename Traits::Fragment>& kept, Refine_counts& counts)
+{
+  typedef typename Traits::Fragment Fragment;
+  bool covered = false;
+  for(const auto& c : near) covered = covered || traits.is_covered(f, c, radius);
+  kept.clear();
+  if(covered) return true;
+  std::vector<Fragment> children;
+  traits.split(f, std::back_inserter(children));
+  for(const Fragment& c : children) {
+    bool single = false;
+    for(const auto& b : near) single = single || traits.is_covered(c, b, radius);
+    const bool by_union = !single && traits.is_covered_by_union(c, around, radius);
+    counts.child_by_single += single;
+    counts.child_by_union += by_union;
+    if(!single && !by_union && traits.area(c) > 0) kept.push_back(c);
+  }
+  return false;
+}
+
 // The engine's step for f done both ways: with is_covered(), split() and is_covered_by_union() one
 // by one, and with the model's refine(). The answers must be the same; `same(a, b)` compares two
 // fragments field by field.
@@ -40,21 +67,8 @@ void expect_refine_agrees(const Traits& traits, const typename Traits::Fragment&
                           Refine_counts& counts, int trial)
 {
   typedef typename Traits::Fragment Fragment;
-  bool expected_covered = false;
-  for(const auto& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
   std::vector<Fragment> expected;
-  if(!expected_covered) {
-    std::vector<Fragment> children;
-    traits.split(f, std::back_inserter(children));
-    for(const Fragment& c : children) {
-      bool single = false;
-      for(const auto& b : near) single = single || traits.is_covered(c, b, radius);
-      const bool by_union = !single && traits.is_covered_by_union(c, around, radius);
-      counts.child_by_single += single;
-      counts.child_by_union += by_union;
-      if(!single && !by_union) expected.push_back(c);
-    }
-  }
+  const bool expected_covered = step_by_operations(traits, f, near, around, radius, expected, counts);
   counts.parent_covered += expected_covered;
   counts.child_kept += int(expected.size());
 

@@ -649,18 +649,8 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
       }
     balls(f, near, around, radius);
 
-    bool expected_covered = false;
-    for(const P& c : near) expected_covered = expected_covered || traits.is_covered(f, c, radius);
     std::vector<Fragment> expected; // what splitting keeps
-    if(!expected_covered) {
-      std::vector<Fragment> children;
-      traits.split(f, std::back_inserter(children));
-      for(const Fragment& c : children) {
-        bool single = false;
-        for(const P& b : near) single = single || traits.is_covered(c, b, radius);
-        if(!single && traits.area(c) > 0 && !traits.is_covered_by_union(c, around, radius)) expected.push_back(c);
-      }
-    }
+    const bool expected_covered = step_by_operations(traits, f, near, around, radius, expected, counts);
     std::vector<Fragment> got;
     const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
     ASSERT_EQ(covered, expected_covered) << "trial " << trial;
