@@ -414,9 +414,12 @@ private:
     Fragment out[4];
     const int l_max = 40 - (f.piece == 0 ? 0 : Piece(f.piece).k);
     const int s = (std::min)(6, l_max - int(f.level));
-    double longest2 = 0;
-    for(int j = 0; j < 3; ++j) longest2 = (std::max)(longest2, squared_distance(p[j], p[(j + 1) % 3]));
-    if(s >= 2 && longest2 <= 16 * radius * radius && (in[0] | in[1] | in[2]) != 0) {
+    auto small = [&]() { // at most 4 D across
+      for(int j = 0; j < 3; ++j)
+        if(!(squared_distance(p[j], p[(j + 1) % 3]) <= 16 * radius * radius)) return false;
+      return true;
+    };
+    if(s >= 2 && (in[0] | in[1] | in[2]) != 0 && small()) {
       // the ball that holds one or two corners and cuts off the most along a chord between two edges
       const double steps = double(1 << s);
       auto chord = [&](int x, int y, const Point& c) { // steps of the edge from x (in the ball) to y
@@ -491,24 +494,19 @@ private:
       }
     }
     if(count == 0) {
-      const double w = 0.5 * unit(f);
-      auto mid = [&](int j, double a, double b) {
-        q[j][0] = f.u + w * (a * f.e[0][0] + b * f.e[1][0]);
-        q[j][1] = f.v + w * (a * f.e[0][1] + b * f.e[1][1]);
-        p[j] = point(q[j]);
-      };
-      mid(3, 1, 0);
-      mid(4, 0, 1);
-      mid(5, 1, 1);
-      test(3, 6);
       // f's children are (0 3 4), (3 1 5), (4 5 2) and the flipped (5 4 3), each listed as corners()
-      // lists it
+      // lists it: the midpoints 3, 4 and 5 are the first corners of children 1, 2 and 3
       static constexpr int table[4][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}, {5, 4, 3}};
       count = 4;
       for(int c = 0; c < 4; ++c) {
         std::copy(table[c], table[c] + 3, tri[c]);
         out[c] = child(f, c);
+        if(c > 0) {
+          q[2 + c][0] = out[c].u, q[2 + c][1] = out[c].v;
+          p[2 + c] = point(q[2 + c]);
+        }
       }
+      test(3, 6);
     }
 
     // A ball that meets f, which lies within R of its centroid (R being the farthest corner's
