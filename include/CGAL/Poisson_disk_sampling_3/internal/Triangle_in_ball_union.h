@@ -177,8 +177,8 @@ private:
   // than the larger count of its terms, a product one more than the sum of the counts of its factors.
   // So |v - exact| <= gamma_n a, gamma_n = n u / (1 - n u) (Higham, Accuracy and Stability of
   // Numerical Algorithms, 2nd ed., Lemma 3.1 and 3.4), and the computed a is at least (1 - gamma_n)
-  // times the exact one. The largest count in `decide` is about 40 (the squared distance from a
-  // centre of the point equidistant from three centres): gamma_40 < 4.5e-15, and 1e-13 a bounds the
+  // times the exact one. The largest count in `decide` is 42 (whether the point equidistant from
+  // three centres is inside a ball): gamma_42 < 4.7e-15, and 1e-13 a bounds the
   // error with room to spare. The coordinates are scaled by a power of two near 1 / radius, so that
   // values stay far from underflow and overflow; the 1e-280 covers what a subnormal could lose.
   // Where the compiler has vectors of two doubles, v and a are one, so that each operation is one
@@ -216,11 +216,7 @@ private:
   struct V
   {
     Bounded x, y, z;
-    V operator-(const V& o) const { return V{x - o.x, y - o.y, z - o.z}; }
-    V operator+(const V& o) const { return V{x + o.x, y + o.y, z + o.z}; }
-    V operator*(const Bounded& s) const { return V{x * s, y * s, z * s}; }
     Bounded dot(const V& o) const { return x * o.x + y * o.y + z * o.z; }
-    V cross(const V& o) const { return V{y * o.z - z * o.y, z * o.x - x * o.z, x * o.y - y * o.x}; }
   };
 
   // `covered` is a proof. `not_covered`: a candidate point was found outside every ball beyond the
@@ -228,9 +224,18 @@ private:
   // `unsure`: some comparison was within the rounding bounds.
   enum Verdict { covered, not_covered, unsure };
 
-  // The candidate-point test of the class comment. Without division: each candidate point is kept as
-  // N / den, it is strictly inside ball i iff |N - c_i den|^2 < r^2 den^2, and outside an edge of T
-  // by the sign of a polynomial times the sign of den. Any step that is not certain is not a proof.
+  // The candidate-point test of the class comment, in the parameters (s, t) of T's plane: with T's
+  // corners o, o + a and o + b, its points are x = o + s a + t b with s, t >= 0 and s + t <= 1, and for
+  // a centre c (taken relative to o)
+  //   |x - c|^2 - r^2 = Q(s, t) - s 2 a.c - t 2 b.c + |c|^2 - r^2,  Q(s, t) = |s a + t b|^2,
+  // so the bisector plane of centres i and j meets T's plane in the line where the linear
+  // L(s, t) = s (2 a.c_j - 2 a.c_i) + t (2 b.c_j - 2 b.c_i) - (|c_j|^2 - |c_i|^2) is zero (L is the
+  // difference of the two squared distances), and a point equidistant from three centres solves two
+  // such equations. Every candidate point is kept as (S / D, T / D): it is strictly inside ball m iff
+  //   Q(S, T) - D (S 2 a.c_m + T 2 b.c_m) + D^2 (|c_m|^2 - r^2) < 0,
+  // where Q(S, T) is the same for all balls; and it is outside T by the signs of S, T and D - S - T
+  // times the sign of D. No division, no normal vector; the largest rounding count (the test above
+  // for a point equidistant from three centres) is 42.
   static Verdict decide(const Point (&corner)[3], const Point* centers, std::size_t k, double radius,
                         double shrink)
   {
@@ -244,27 +249,29 @@ private:
     };
     const Bounded rr = number((radius - shrink) * scale);
     const Bounded r2 = rr * rr;
-    const Bounded zero = number(0), one = number(1), half = number(0.5);
-    V c[max_balls];
-    Bounded c2[max_balls]; // |c_i|^2 / 2: the bisector plane of i and j is x . (c_j - c_i) = c2[j] - c2[i]
+    const Bounded zero = number(0), one = number(1);
+    const V a = rel(corner[1]), b = rel(corner[2]);
+    const Bounded aa = a.dot(a), bb = b.dot(b), ab = a.dot(b), ab2 = ab + ab;
+    Bounded pa[max_balls], pb[max_balls], c2[max_balls], g[max_balls]; // 2 a.c, 2 b.c, |c|^2, |c|^2 - r^2
     for(std::size_t i = 0; i < k; ++i) {
-      c[i] = rel(centers[i]);
-      c2[i] = c[i].dot(c[i]) * half;
+      const V c = rel(centers[i]);
+      const Bounded ac = a.dot(c), bc = b.dot(c);
+      pa[i] = ac + ac;
+      pb[i] = bc + bc;
+      c2[i] = c.dot(c);
+      g[i] = c2[i] - r2;
     }
-    const V v[3] = {V{zero, zero, zero}, rel(corner[1]), rel(corner[2])};
-    const V n = v[1].cross(v[2]); // T's plane is n . x = 0
 
     // strictly inside some ball; the ball that held the last point is tried first, since the
     // points tested one after the other are close
     std::size_t last = 0;
     bool sure = true; // after `inside` returned false: whether every ball was certainly outside
-    auto inside = [&](const V& N, const Bounded& den) {
-      const Bounded d2 = r2 * den * den;
+    auto inside = [&](const Bounded& S, const Bounded& T, const Bounded& D) {
+      const Bounded q = S * (aa * S + ab2 * T) + bb * T * T, dd = D * D;
       sure = true;
       for(std::size_t step = 0; step < k; ++step) {
         const std::size_t m = (last + step) % k;
-        const V w = N - c[m] * den;
-        const Bounded excess = w.dot(w) - d2;
+        const Bounded excess = q - D * (S * pa[m] + T * pb[m]) + dd * g[m];
         if(negative(excess)) {
           last = m;
           return true;
@@ -274,19 +281,20 @@ private:
       return false;
     };
 
-    for(const V& p : v)
-      if(!inside(p, one)) return sure ? not_covered : unsure;
+    if(!inside(zero, zero, one) || !inside(one, zero, one) || !inside(zero, one, one))
+      return sure ? not_covered : unsure;
 
-    // edges meet bisector planes: the signed offset of each corner from a plane is computed once
-    const V d[3] = {v[1], v[2] - v[1], v[0] - v[2]}; // edge e goes from v[e] to v[e + 1]
-    // bit j of misses[i]: the bisector plane of i and j certainly misses T, and so does every point
-    // equidistant from i, j and a third centre (it is on that plane): the loop below skips them
+    // edges meet the lines L = 0; with the values s0, s1, s2 of L at the corners (0, 0), (1, 0) and
+    // (0, 1), the line meets the edge from corner e to corner e + 1 where L is zero: at (s0, 0) / D
+    // on the first, (-s2, s1) / D on the second and (0, -s0) / D on the third, D = s_e - s_e+1.
+    // Bit j of misses[i]: L certainly has one sign on T, so the bisector plane of i and j misses T,
+    // and so does every point equidistant from i, j and a third centre (it is on that plane): the
+    // loop below skips them.
     std::uint32_t misses[max_balls] = {};
     for(std::size_t i = 0; i < k; ++i)
       for(std::size_t j = i + 1; j < k; ++j) {
-        const V m = c[j] - c[i];
         const Bounded h = c2[j] - c2[i];
-        const Bounded s[3] = {zero - h, v[1].dot(m) - h, v[2].dot(m) - h};
+        const Bounded s[3] = {zero - h, (pa[j] - pa[i]) - h, (pb[j] - pb[i]) - h};
         const bool above = positive(s[0]) && positive(s[1]) && positive(s[2]);
         if(above || (negative(s[0]) && negative(s[1]) && negative(s[2]))) {
           misses[i] |= std::uint32_t(1) << j;
@@ -298,32 +306,30 @@ private:
           if((positive(s0) && positive(s1)) || (negative(s0) && negative(s1))) continue;
           const Bounded den = s0 - s1;
           if(!positive(den) && !negative(den)) return unsure; // the edge may lie in the plane
-          if(!inside(v[ed] * den + d[ed] * s0, den)) return sure ? not_covered : unsure; // v + d s0 / den
+          const bool in = ed == 0 ? inside(s[0], zero, den)
+                                  : ed == 1 ? inside(zero - s[2], s[1], den) : inside(zero, zero - s[0], den);
+          if(!in) return sure ? not_covered : unsure;
         }
       }
 
-    // points of T's plane equidistant from three centres, but for those on a plane that misses T
+    // points of T's plane equidistant from three centres, but for those on a plane that misses T:
+    // L_ij = L_il = 0, that is s P1 + t Q1 = H1 and s P2 + t Q2 = H2
     for(std::size_t i = 0; i < k; ++i)
       for(std::size_t j = i + 1; j < k; ++j) {
         if(misses[i] >> j & 1) continue;
-        const V m1 = c[j] - c[i];
-        const Bounded h1 = c2[j] - c2[i];
+        const Bounded P1 = pa[j] - pa[i], Q1 = pb[j] - pb[i], H1 = c2[j] - c2[i];
         for(std::size_t l = j + 1; l < k; ++l) {
           if((misses[i] >> l & 1) || (misses[j] >> l & 1)) continue;
-          const V m2 = c[l] - c[i];
-          const Bounded h2 = c2[l] - c2[i];
-          const Bounded det = n.dot(m1.cross(m2));
+          const Bounded P2 = pa[l] - pa[i], Q2 = pb[l] - pb[i], H2 = c2[l] - c2[i];
+          const Bounded det = P1 * Q2 - Q1 * P2;
           const bool up = positive(det);
           if(!up && !negative(det)) return unsure; // the three bisectors may not meet in one point
-          const V N = m2.cross(n) * h1 + n.cross(m1) * h2; // the point is N / det
-          bool outside = false;
-          for(int ed = 0; ed < 3 && !outside; ++ed) {
-            // ((v_e+1 - v_e) x (N / det - v_e)) . n < 0, multiplied by det^2
-            const Bounded side = (v[(ed + 1) % 3] - v[ed]).cross(N - v[ed] * det).dot(n);
-            outside = up ? negative(side) : positive(side);
-          }
+          const Bounded S = H1 * Q2 - Q1 * H2, T = P1 * H2 - H1 * P2; // the point is (S, T) / det
+          const Bounded rest = det - S - T;
+          const bool outside = up ? negative(S) || negative(T) || negative(rest)
+                                  : positive(S) || positive(T) || positive(rest);
           if(outside) continue;
-          if(!inside(N, det)) return sure ? not_covered : unsure;
+          if(!inside(S, T, det)) return sure ? not_covered : unsure;
         }
       }
     return covered;
