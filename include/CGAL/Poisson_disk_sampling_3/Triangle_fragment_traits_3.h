@@ -483,7 +483,7 @@ private:
             const int t0[3] = {3, 4, best_y[0]};
             std::copy(t0, t0 + 3, tri[0]);
           }
-          for(int t = 0; t < count && count > 0; ++t) {
+          for(int t = 0; t < count; ++t) {
             const double qt[3][2] = {{q[tri[t][0]][0], q[tri[t][0]][1]},
                                      {q[tri[t][1]][0], q[tri[t][1]][1]},
                                      {q[tri[t][2]][0], q[tri[t][2]][1]}};
