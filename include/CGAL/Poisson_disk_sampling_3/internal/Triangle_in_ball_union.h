@@ -65,11 +65,12 @@ public:
   template <class PointRange>
   static bool is_inside_one(const Point& p, const PointRange& centers, double r)
   {
+    bool inside = false;
     for(const auto& c : centers) {
       const double x = p[0] - c[0], y = p[1] - c[1], z = p[2] - c[2];
-      if(x * x + y * y + z * z < r * r) return true;
+      inside |= x * x + y * y + z * z < r * r;
     }
-    return false;
+    return inside;
   }
 
   /// `covers()` without its first step, for a triangle whose corners `is_inside_one()` has found
@@ -79,13 +80,15 @@ public:
   static bool covers_with_corners_inside(const Point (&corner)[3], const PointRange& centers, double radius,
                                          double corner_error)
   {
-    Point kept[max_balls];
+    Point kept[max_balls + 1];
     std::size_t k = 0;
     const double r = radius - corner_error;
     // Only the balls that meet T matter: the union of the others misses T. Keep the balls that meet
     // T's circumscribing ball around its centroid; the test is cubic in their number, and this keeps
     // two or three for a small fragment instead of the dozen a box would. (Rounding here only drops
-    // or keeps a ball: any subset of the balls gives a correct answer.)
+    // or keeps a ball: any subset of the balls gives a correct answer, so the first max_balls are
+    // enough.) Every ball is written, and k passes it if it meets T: no branch on which balls do,
+    // a coin toss for the branch predictor; the last place takes those beyond max_balls.
     double g[3], reach2 = 0;
     for(int i = 0; i < 3; ++i) g[i] = (corner[0][i] + corner[1][i] + corner[2][i]) / 3;
     for(const Point& p : corner) {
@@ -95,9 +98,8 @@ public:
     const double reach = (r + std::sqrt(reach2)) * (1 + 1e-9);
     for(const auto& c : centers) {
       const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
-      if(x * x + y * y + z * z >= reach * reach) continue;
-      if(k == max_balls) break; // a subset is enough for a correct answer
-      kept[k++] = Point{{c[0], c[1], c[2]}};
+      kept[k] = Point{{c[0], c[1], c[2]}};
+      k += std::size_t(x * x + y * y + z * z < reach * reach) & std::size_t(k < max_balls);
     }
     if(k == 0) return false;
     // (Nothing cheaper comes first: a `Bounded` operation costs about what a double one does, and a
@@ -262,23 +264,19 @@ private:
       g[i] = c2[i] - r2;
     }
 
-    // strictly inside some ball; the ball that held the last point is tried first, since the
-    // points tested one after the other are close
-    std::size_t last = 0;
+    // strictly inside some ball: every ball is tried, with no branch on the answers (which ball
+    // holds a point, if any, is a coin toss for the branch predictor)
     bool sure = true; // after `inside` returned false: whether every ball was certainly outside
     auto inside = [&](const Bounded& S, const Bounded& T, const Bounded& D) {
       const Bounded q = S * (aa * S + ab2 * T) + bb * T * T, dd = D * D;
-      sure = true;
-      for(std::size_t step = 0; step < k; ++step) {
-        const std::size_t m = (last + step) % k;
+      bool in = false, out = true;
+      for(std::size_t m = 0; m < k; ++m) {
         const Bounded excess = q - D * (S * pa[m] + T * pb[m]) + dd * g[m];
-        if(negative(excess)) {
-          last = m;
-          return true;
-        }
-        sure = sure && positive(excess);
+        in |= negative(excess);
+        out &= positive(excess);
       }
-      return false;
+      sure = out;
+      return in;
     };
 
     if(!inside(zero, zero, one) || !inside(one, zero, one) || !inside(zero, one, one))
