@@ -585,8 +585,25 @@ void register_cases()
 
 } // namespace
 
-// Replacements of the global allocation functions, feeding the heap accounting above. Each block
-// carries its size in a header of 16 bytes (keeps the alignment of new).
+// Replacements of the global allocation functions, feeding the heap accounting above. With glibc, a
+// block's size is the allocator's usable size of it (what it holds for the program, its rounding up
+// included); elsewhere each block carries the size asked for in a header of 16 bytes (which keeps the
+// alignment of new), which the resident figure then counts too.
+#if defined(__GLIBC__)
+void* operator new(std::size_t n)
+{
+  void* p = std::malloc(n == 0 ? 1 : n);
+  if(!p) throw std::bad_alloc();
+  count_allocation((long long)malloc_usable_size(p));
+  return p;
+}
+void operator delete(void* p) noexcept
+{
+  if(!p) return;
+  live_bytes -= (long long)malloc_usable_size(p);
+  std::free(p);
+}
+#else
 void* operator new(std::size_t n)
 {
   void* p = std::malloc(n + 16);
@@ -602,6 +619,7 @@ void operator delete(void* p) noexcept
   live_bytes -= (long long)*reinterpret_cast<std::size_t*>(block);
   std::free(block);
 }
+#endif
 void* operator new[](std::size_t n) { return operator new(n); }
 void operator delete[](void* p) noexcept { operator delete(p); }
 void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
