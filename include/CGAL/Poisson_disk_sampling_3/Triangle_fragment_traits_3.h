@@ -516,23 +516,14 @@ private:
     for(int i = 0; i < 3; ++i) g[i] = (p[0][i] + p[1][i] + p[2][i]) / 3;
     for(int j = 0; j < 3; ++j) reach2 = (std::max)(reach2, squared_distance(p[j], Point{{g[0], g[1], g[2]}}));
     const double reach = (radius + 1.5 * std::sqrt(reach2) + 4 * position_error_) * (1 + 1e-9);
-    // (with no branch on which balls meet f, a coin toss for the branch predictor: every ball is
-    // written, and k passes it if it meets f, up to max_balls + 1, so that the places beyond
-    // max_balls take the balls that do not fit and tell that there were some)
-    constexpr std::size_t max_balls = internal::Triangle_in_ball_union::max_balls;
-    Point meeting[max_balls + 2];
-    std::size_t k = 0;
-    for(const auto& c : around) {
-      const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
-      meeting[k] = Point{{c[0], c[1], c[2]}};
-      k += std::size_t(x * x + y * y + z * z < reach * reach) & std::size_t(k <= max_balls);
-    }
-    const bool all_kept = k <= max_balls; // whether `meeting` holds every ball of `around` that can meet f
-    k = (std::min)(k, max_balls);
+    typedef internal::Triangle_in_ball_union Union;
+    Point meeting[Union::max_balls + 2];
+    std::size_t k = Union::balls_near(around, g, reach, meeting);
+    const bool all_kept = k <= Union::max_balls; // whether `meeting` holds every ball of `around` that can meet f
+    k = (std::min)(k, Union::max_balls);
 
     // which of the points are strictly inside a ball of `meeting`, shrunk as the union test shrinks
     // them: a piece with a corner outside is not covered by the union
-    typedef internal::Triangle_in_ball_union Union;
     const double corner_error = 2 * position_error_; // position_error_ bounds each coordinate
     const Points_view balls{meeting, meeting + k};
     signed char inside[6] = {-1, -1, -1, -1, -1, -1}; // not known yet

@@ -73,6 +73,22 @@ public:
     return inside;
   }
 
+  /// Writes to `out` the balls of `centers`, in their order, whose centres are closer than `reach` to
+  /// g, up to max_balls + 1 of them (`out` has room for max_balls + 2), and returns how many: max_balls
+  /// + 1 means that more than max_balls are. Every ball is written, and the count passes it only if
+  /// it is that close: no branch on which balls are, a coin toss for the branch predictor.
+  template <class PointRange>
+  static std::size_t balls_near(const PointRange& centers, const double (&g)[3], double reach, Point* out)
+  {
+    std::size_t k = 0;
+    for(const auto& c : centers) {
+      const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
+      out[k] = Point{{c[0], c[1], c[2]}};
+      k += std::size_t(x * x + y * y + z * z < reach * reach) & std::size_t(k <= max_balls);
+    }
+    return k;
+  }
+
   /// `covers()` without its first step, for a triangle whose corners `is_inside_one()` has found
   /// inside the balls shrunk by `corner_error` (with radius - corner_error > 0). It is as sound for
   /// any triangle: the candidate points it checks include the corners.
@@ -80,15 +96,12 @@ public:
   static bool covers_with_corners_inside(const Point (&corner)[3], const PointRange& centers, double radius,
                                          double corner_error)
   {
-    Point kept[max_balls + 1];
-    std::size_t k = 0;
     const double r = radius - corner_error;
     // Only the balls that meet T matter: the union of the others misses T. Keep the balls that meet
     // T's circumscribing ball around its centroid; the test is cubic in their number, and this keeps
     // two or three for a small fragment instead of the dozen a box would. (Rounding here only drops
     // or keeps a ball: any subset of the balls gives a correct answer, so the first max_balls are
-    // enough.) Every ball is written, and k passes it if it meets T: no branch on which balls do,
-    // a coin toss for the branch predictor; the last place takes those beyond max_balls.
+    // enough.)
     double g[3], reach2 = 0;
     for(int i = 0; i < 3; ++i) g[i] = (corner[0][i] + corner[1][i] + corner[2][i]) / 3;
     for(const Point& p : corner) {
@@ -96,11 +109,8 @@ public:
       reach2 = (std::max)(reach2, x * x + y * y + z * z);
     }
     const double reach = (r + std::sqrt(reach2)) * (1 + 1e-9);
-    for(const auto& c : centers) {
-      const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
-      kept[k] = Point{{c[0], c[1], c[2]}};
-      k += std::size_t(x * x + y * y + z * z < reach * reach) & std::size_t(k < max_balls);
-    }
+    Point kept[max_balls + 2];
+    const std::size_t k = (std::min)(balls_near(centers, g, reach, kept), max_balls);
     if(k == 0) return false;
     // (Nothing cheaper comes first: a `Bounded` operation costs about what a double one does, and a
     // triangle that is not covered fails at one of the first candidate points.)
