@@ -708,6 +708,62 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
   EXPECT_GT(deep, 20);
 }
 
+// level() is the depth by size: a fragment's area is at most 4^-level() of its root's and more than
+// 4^-(level() + 1) of it, for the pieces that chord cuts leave as for the children of midpoint
+// subdivision; and a fragment above the engine's floor (depth 40) leaves its lattice room to be split
+// down to it with corners of at most 52 bits. A cut puts its pieces on a finer lattice than their
+// size needs; when the lattice's level counted as depth, chains of cuts reached the floor while their
+// pieces were still 2^-28 of their face, and the sampler dropped them with gaps left (the test
+// MeshSampling.FragmentsReachTheDepthFloorOnlyWhenThatSmall). Chains of steps with one ball that holds
+// a corner of the fragment, whole random triangles near the origin and far from it, down to the floor.
+TEST(TriangleFragments, LevelIsTheDepthBySizeAndCutsLeaveRoomForIt)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  typedef Traits::Fragment Fragment;
+  typedef Traits::Point P;
+  Random rng(31);
+  int cuts = 0, at_floor = 0;
+  for(int trial = 0; trial < 1000; ++trial) {
+    Traits traits;
+    const double offset = trial % 2 ? 0. : 500.;
+    auto rnd = [&]() { return P{{offset + rng.uniform(), offset + rng.uniform(), offset + 0.3 * rng.uniform()}}; };
+    traits.add_triangle(rnd(), rnd(), rnd());
+    std::vector<Fragment> roots;
+    traits.initial_fragments(std::back_inserter(roots));
+    if(roots.empty()) continue;
+    const double root_area = traits.area(roots[0]);
+    Fragment f = roots[0];
+    for(int step = 0; step < 1000 && traits.level(f) < 40; ++step) {
+      const std::array<P, 3> c = fragment_corners(traits, f);
+      double size = 0;
+      for(int j = 0; j < 3; ++j)
+        size = std::max(size, std::hypot(c[j][0] - c[(j + 1) % 3][0], c[j][1] - c[(j + 1) % 3][1],
+                                         c[j][2] - c[(j + 1) % 3][2]));
+      // a ball near corner j, of a radius between 0.3 and 0.8 times the longest edge
+      const int j = int(rng.uniform_index(3));
+      const double radius = size * (0.3 + 0.5 * rng.uniform());
+      P centre;
+      for(int i = 0; i < 3; ++i) centre[i] = c[j][i] + 0.1 * ((c[0][i] + c[1][i] + c[2][i]) / 3 - c[j][i]);
+      const std::vector<P> balls{centre};
+      std::vector<Fragment> kept;
+      if(traits.refine(f, balls, balls, radius, std::back_inserter(kept)) || kept.empty()) break;
+      cuts += kept.size() <= 2 && kept[0].level != f.level + 1u; // pieces of a cut, not children
+      for(const Fragment& g : kept) {
+        const int l = traits.level(g);
+        const double ratio = traits.area(g) / root_area;
+        EXPECT_GE(l, traits.level(f)) << "trial " << trial;
+        EXPECT_LE(ratio, std::ldexp(1., -2 * l) * (1 + 1e-12)) << "trial " << trial << ", level " << l;
+        EXPECT_GT(ratio, std::ldexp(1., -2 * (l + 1)) * (1 - 1e-12)) << "trial " << trial << ", level " << l;
+        if(l < 40) EXPECT_LE(int(g.level) + 40 - l, 52) << "trial " << trial << ", level " << l;
+      }
+      f = kept[rng.uniform_index(kept.size())];
+    }
+    at_floor += traits.level(f) >= 40;
+  }
+  EXPECT_GT(cuts, 2000);
+  EXPECT_GT(at_floor, 400);
+}
+
 // The pieces of a long thin triangle (for a minimum distance D) tile it: their areas add up to the
 // triangle's, and every point of the triangle lies in exactly one piece (or on the boundary between
 // pieces). They are few (fewer than 2 L / max(D, width) for a face L long), no longer than four

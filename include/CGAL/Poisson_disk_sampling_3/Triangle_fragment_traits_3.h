@@ -59,15 +59,16 @@ namespace Poisson_disk_sampling_3 {
 /// Chord cuts (not in the paper): when a dart finds a fragment at most 4 D across partly covered, and
 /// a ball of `near` holds one or two of its corners, `refine()` cuts off the part of the fragment
 /// that the ball holds, up to the chord between two points of its edges: a triangle at one corner,
-/// or a quadrilateral along an edge. The chord's ends are multiples of 1/64 of their edges, moved
-/// towards the ball's corners until their computed points are in the ball with the margin of
+/// or a quadrilateral along an edge. The chord's ends are multiples of 1/64 of their edges (of a
+/// coarser fraction where the fragment's lattice is already much finer than its size, see `level()`),
+/// moved towards the ball's corners until their computed points are in the ball with the margin of
 /// `is_covered()`; the part cut off, the convex hull of points in the ball, is covered. When the
 /// ball that takes the most takes at least a quarter of the fragment, what is left (a triangle, or a
 /// quadrilateral as two triangles) replaces the fragment's four children, after the same single-ball
-/// and union tests. Its corners are exact points of a lattice 2^-6 finer than the fragment's (made as
-/// coarse as they allow), and it is refined like any fragment, by midpoint subdivision or by another
-/// cut. The darts then follow the free part of a fragment instead of the quarters of a subdivision:
-/// on lion.off at about one million points, 6.2 darts per sample instead of 8.0, and 1.87 fragments
+/// and union tests. Its corners are exact points of a lattice up to 2^-6 finer than the fragment's
+/// (made as coarse as they allow), and it is refined like any fragment, by midpoint subdivision or by
+/// another cut. The darts then follow the free part of a fragment instead of the quarters of a
+/// subdivision: on lion.off at about one million points, 6.2 darts per sample instead of 8.0, and 1.87 fragments
 /// active per sample at the peak instead of 2.34 (see `benchmark/README.md`, change 38).
 ///
 /// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
@@ -275,14 +276,20 @@ public:
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the depth of the fragment, counted from its whole
-  /// face: the level of its corners' lattice in its piece, plus k for a piece (a row is about 2^-k of
-  /// the face's length; 0 for a whole face). That is its subdivision level, plus up to 6 for each
-  /// chord cut above it (`refine()` makes no cut that would take it past the engine's floor). The
-  /// parameters of a fragment's corners have at most this many bits plus those of a cap's rows (at
-  /// most 12): exact in double precision (52 bits) down to the engine's floor, depth 40. Below it, in
-  /// the maximality certificate's last levels, a parameter is off by a few 2^-53 at most, which moves
-  /// a corner by less than a quarter of `position_error()`, within the margin of `is_covered()`.
-  int level(const Fragment& f) const { return int(f.level) + (f.piece == 0 ? 0 : Piece(f.piece).k); }
+  /// face, by its size: the largest L such that its area is at most 4^-L times its root piece's, plus
+  /// k for a piece (a row is about 2^-k of the face's length; 0 for a whole face). For the children
+  /// of midpoint subdivision, the level of the corners' lattice plus k.
+  /// A chord cut puts its pieces on a lattice up to 6 levels finer than their size alone would need
+  /// (the cut points are multiples of 1/64 of their edges): the lattice level exceeds the depth by
+  /// `lattice_excess()`, which `refine()` keeps at most 12 (less the bits of a cap's rows), so that
+  /// a fragment can always be split down to the engine's floor, depth 40, with its corners' parameters
+  /// exact in double precision (52 bits). Below it, in the maximality certificate's last levels, a
+  /// parameter is off by a few 2^-53 at most, which moves a corner by less than a quarter of
+  /// `position_error()`, within the margin of `is_covered()`.
+  int level(const Fragment& f) const
+  {
+    return int(f.level) + (f.piece == 0 ? 0 : Piece(f.piece).k) - lattice_excess(f);
+  }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
   /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
@@ -319,6 +326,16 @@ public:
   /// @}
 
 private:
+  // How many levels f's lattice is finer than its size needs: ceil(log2 |det e| / 2), for the cells of
+  // its lattice that f spans, |det e| / 2 (0 for the children of midpoint subdivision, whose offsets
+  // are their root's). level() is the lattice level less this: the floor of log4 of the area ratio.
+  static int lattice_excess(const Fragment& f)
+  {
+    const std::int64_t det = std::int64_t(f.e[0][0]) * f.e[1][1] - std::int64_t(f.e[1][0]) * f.e[0][1];
+    const std::uint64_t cells = std::uint64_t(det < 0 ? -det : det); // below 2^31: offsets of 16 bits
+    return cells <= 1 ? 0 : (floor_log2(std::uint32_t(cells - 1)) + 2) / 2;
+  }
+
   // the parameters of corner j of f, exactly (dyadic, within the bits of its level)
   static std::array<double, 2> corner_uv(const Fragment& f, int j)
   {
@@ -346,7 +363,7 @@ private:
   // 2^-l), in the coarsest lattice that holds them; false if the offsets do not fit
   static bool make_piece(const double (&q)[3][2], int l, std::uint32_t face, std::uint32_t piece, Fragment& r)
   {
-    // in units of 2^-l, all integers below 2^53 in magnitude (l <= 40, parameters in [0, 1])
+    // in units of 2^-l, all integers below 2^53 in magnitude (l <= 52, parameters in [0, 1])
     const double scale = double(std::uint64_t(1) << l);
     std::int64_t e[2][2];
     std::uint64_t bits = std::uint64_t(std::int64_t(q[0][0] * scale)) | std::uint64_t(std::int64_t(q[0][1] * scale));
@@ -412,8 +429,16 @@ private:
     int tri[4][3];
     int count = 0;
     Fragment out[4];
-    const int l_max = 40 - (f.piece == 0 ? 0 : Piece(f.piece).k);
-    const int s = (std::min)(6, l_max - int(f.level));
+    // The corners' parameters in the face have f.level + k + frame_bits bits, at most 52 to be exact.
+    // A cut puts its pieces on a lattice s levels finer than f's (the cut points are multiples of
+    // 2^-s of their edges), and split down to the engine's floor (level() 40) a piece reaches the
+    // lattice level 40 - k + its lattice_excess: the cut is made only if that excess stays at most
+    // `spare` (52 bits in all). s is lowered where f's own excess leaves less room than 6 levels; the
+    // pieces of a cut leave about s levels more excess than f had, less what they shrink.
+    const int frame = frame_bits(face, f.piece);
+    const int spare = 12 - frame;
+    const int s = (std::min)({6, 52 - int(f.level) - (f.piece == 0 ? 0 : Piece(f.piece).k) - frame,
+                              spare + 1 - lattice_excess(f)});
     auto small = [&]() { // at most 4 D across
       for(int j = 0; j < 3; ++j)
         if(!(squared_distance(p[j], p[(j + 1) % 3]) <= 16 * radius * radius)) return false;
@@ -487,7 +512,8 @@ private:
             const double qt[3][2] = {{q[tri[t][0]][0], q[tri[t][0]][1]},
                                      {q[tri[t][1]][0], q[tri[t][1]][1]},
                                      {q[tri[t][2]][0], q[tri[t][2]][1]}};
-            if(!make_piece(qt, int(f.level) + s, f.face, f.piece, out[t])) count = 0; // then split
+            if(!make_piece(qt, int(f.level) + s, f.face, f.piece, out[t]) || lattice_excess(out[t]) > spare)
+              count = 0; // then split
           }
           if(count > 0) test(3, 5);
         }
@@ -675,6 +701,15 @@ private:
     const int r = kind == 2 ? b : c;
     R[0] = corner_u[r], R[1] = corner_v[r];
     return rows_log2(f, kind, k);
+  }
+
+  // the bits that a piece's frame adds to the parameters of its fragments' corners beyond their
+  // lattice level plus k: a cap's rows (k counts its split point's bits, or a needle's rows)
+  static int frame_bits(const Face& face, std::uint32_t piece)
+  {
+    if(piece == 0) return 0;
+    const Piece p(piece);
+    return p.kind == 1 ? 0 : (std::max)(0, rows_log2(face, p.kind, p.k));
   }
 
   // the frame of a piece other than 0; its corners' parameters have the bits of the fragment's level

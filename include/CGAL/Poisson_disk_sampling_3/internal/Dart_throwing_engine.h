@@ -290,7 +290,8 @@ public:
           around[k].push_back(accepted[d.batch_coverer]);
         }
         // F itself gets the single-ball test only: it is rarely covered by the union when no single
-        // ball covers it, and if it is, its children are, and the union test on them drops them
+        // ball covers it, and if it is, its children are, and the union test on them drops them (at
+        // the depth floor, where it has no children, it gets the union test too)
         const int depth = depth_of(d.item);
         children.clear();
         if(refine(d.item.fragment, depth, near[k], around[k], children)) {
@@ -420,7 +421,9 @@ private:
       if(depth < max_depth_) return traits_.refine(f, near, around, d_, std::back_inserter(children));
     }
     if(is_covered_by_any(f, near)) return true;
-    if(depth >= max_depth_) return false;
+    // at the floor, the union test too: a fragment is counted as dropped only if no test proves it
+    // covered (its children would get the union test; it has none)
+    if(depth >= max_depth_) return is_covered_by_union(f, around);
     traits_.split(f, std::back_inserter(children));
     std::size_t kept = 0;
     for(const Fragment& c : children)
