@@ -714,7 +714,7 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
 // down to it with corners of at most 52 bits. A cut puts its pieces on a finer lattice than their
 // size needs; when the lattice's level counted as depth, chains of cuts reached the floor while their
 // pieces were still 2^-28 of their face, and the sampler dropped them with gaps left (the test
-// MeshSampling.FragmentsReachTheDepthFloorOnlyWhenThatSmall). Chains of steps with one ball that holds
+// DepthFloor/MeshSampling.IsMaximalPoissonDiskSet). Chains of steps with one ball that holds
 // a corner of the fragment, whole random triangles near the origin and far from it, down to the floor.
 TEST(TriangleFragments, LevelIsTheDepthBySizeAndCutsLeaveRoomForIt)
 {
