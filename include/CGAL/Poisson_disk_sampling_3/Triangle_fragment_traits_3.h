@@ -288,7 +288,7 @@ public:
   /// `position_error()`, within the margin of `is_covered()`.
   int level(const Fragment& f) const
   {
-    return int(f.level) + (f.piece == 0 ? 0 : Piece(f.piece).k) - lattice_excess(f);
+    return int(f.level) + piece_k(f) - lattice_excess(f);
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: starts loading what `random_sample(f, rng)`
@@ -326,6 +326,9 @@ public:
   /// @}
 
 private:
+  // the k of f's piece: its rows are 2^k (a cap's split point a multiple of 2^-k); 0 for a whole face
+  static int piece_k(const Fragment& f) { return f.piece == 0 ? 0 : Piece(f.piece).k; }
+
   // How many levels f's lattice is finer than its size needs: ceil(log2 |det e| / 2), for the cells of
   // its lattice that f spans, |det e| / 2 (0 for the children of midpoint subdivision, whose offsets
   // are their root's). level() is the lattice level less this: the floor of log4 of the area ratio.
@@ -437,8 +440,7 @@ private:
     // pieces of a cut leave about s levels more excess than f had, less what they shrink.
     const int frame = frame_bits(face, f.piece);
     const int spare = 12 - frame;
-    const int s = (std::min)({6, 52 - int(f.level) - (f.piece == 0 ? 0 : Piece(f.piece).k) - frame,
-                              spare + 1 - lattice_excess(f)});
+    const int s = (std::min)({6, 52 - int(f.level) - piece_k(f) - frame, spare + 1 - lattice_excess(f)});
     auto small = [&]() { // at most 4 D across
       for(int j = 0; j < 3; ++j)
         if(!(squared_distance(p[j], p[(j + 1) % 3]) <= 16 * radius * radius)) return false;
