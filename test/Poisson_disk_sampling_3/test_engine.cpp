@@ -716,6 +716,73 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
 // pieces were still 2^-28 of their face, and the sampler dropped them with gaps left (the test
 // DepthFloor/MeshSampling.IsMaximalPoissonDiskSet). Chains of steps with one ball that holds
 // a corner of the fragment, whole random triangles near the origin and far from it, down to the floor.
+// Far from the origin, a ball covers a fragment unless a corner is farther from its centre than the
+// radius less a margin relative to the face's size and the radius, not to the coordinates. With the
+// coordinates' rounding, position_error(), as the margin, the balls' boundaries carried a band about
+// 10^-7 D wide here that no test decided, and fragments where three boundaries met inside it were split
+// down to the depth floor and dropped (MeshSampling.FarFromTheOriginNothingIsDropped).
+TEST(TriangleFragments, CoverageMarginIsRelativeToTheFaceNotTheOrigin)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  typedef Traits::Point P;
+  typedef CGAL::Exact_rational ET;
+  Random rng(37);
+  int in_band = 0;
+  for(int trial = 0; trial < 200; ++trial) {
+    const P o{{2e6 * (1 + rng.uniform()), -6e5 * (1 + rng.uniform()), 4e4 * (1 + rng.uniform())}};
+    P q[3] = {o, o, o};
+    for(int j = 1; j < 3; ++j)
+      for(int i = 0; i < 3; ++i) q[j][i] += 0.01 * (rng.uniform() - 0.5);
+    Traits traits;
+    traits.add_triangle(q[0], q[1], q[2]);
+    std::vector<Traits::Fragment> roots;
+    traits.initial_fragments(std::back_inserter(roots));
+    if(roots.size() != 1) continue;
+    const double D = 0.013;
+    ASSERT_GT(D, 0x1.0p20 * traits.position_error()); // a distance the samplers accept
+    // a centre off the plane above the circumcentre, at D (1 + delta) from the corners: delta below
+    // -1e-7 is well inside the ball (more than the rounding of the centre's coordinates), delta above
+    // 1e-7 outside; position_error() is about 4e-7 D
+    const double delta = (rng.uniform() < 0.5 ? -1 : 1) * (1e-7 + 2e-7 * rng.uniform());
+    double a[3], b[3];
+    for(int i = 0; i < 3; ++i) a[i] = q[1][i] - q[0][i], b[i] = q[2][i] - q[0][i];
+    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2], det = 2 * (aa * bb - ab * ab);
+    const double s = bb * (aa - ab) / det, t = aa * (bb - ab) / det; // circumcentre q0 + s a + t b
+    double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double cc[3], R2 = 0;
+    for(int i = 0; i < 3; ++i) cc[i] = s * a[i] + t * b[i], R2 += cc[i] * cc[i];
+    if(!(R2 < 0.9 * D * D)) continue; // an obtuse triangle: no such centre
+    const double h = std::sqrt(D * D * (1 + delta) * (1 + delta) - R2);
+    P centre;
+    for(int i = 0; i < 3; ++i) centre[i] = q[0][i] + (cc[i] + h * n[i] / nn);
+    // the exact distances of the face's corners (the input points) from the centre as rounded
+    ET farthest(0);
+    for(const P& c : q) {
+      ET d2(0);
+      for(int i = 0; i < 3; ++i) d2 += (ET(c[i]) - ET(centre[i])) * (ET(c[i]) - ET(centre[i]));
+      farthest = (std::max)(farthest, d2);
+    }
+    const ET D2 = ET(D) * ET(D);
+    if(delta < 0) {
+      ASSERT_LT(farthest, D2 * ET(1 - 5e-8)) << "trial " << trial; // inside by more than 5e-8 D^2
+      ++in_band;
+      const std::vector<P> one{centre};
+      EXPECT_TRUE(traits.is_covered(roots[0], centre, D)) << "trial " << trial;
+      EXPECT_TRUE(traits.is_covered_by_union(roots[0], one, D)) << "trial " << trial;
+      std::vector<Traits::Fragment> children;
+      EXPECT_TRUE(traits.refine(roots[0], one, one, D, std::back_inserter(children))) << "trial " << trial;
+    } else {
+      ASSERT_GT(farthest, D2) << "trial " << trial;
+      const std::vector<P> one{centre};
+      EXPECT_FALSE(traits.is_covered(roots[0], centre, D)) << "trial " << trial;
+      EXPECT_FALSE(traits.is_covered_by_union(roots[0], one, D)) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(in_band, 50);
+}
+
 TEST(TriangleFragments, LevelIsTheDepthBySizeAndCutsLeaveRoomForIt)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;

@@ -253,13 +253,16 @@ public:
   }
 
   /// true only if the three corners are within `radius` of `center` by more than their rounding error,
-  /// so that the exact sub-triangle lies in the ball
+  /// so that the exact sub-triangle lies in the ball (computed relative to the face's first corner:
+  /// see `local_error()`)
   bool is_covered(const Fragment& f, const Point& center, double radius) const
   {
-    const double r2 = covering_squared_radius(radius); // negative: no squared distance is below it
-    const std::array<Point, 3> c = corners(f);
-    return squared_distance(c[0], center) <= r2 && squared_distance(c[1], center) <= r2 &&
-           squared_distance(c[2], center) <= r2;
+    const Face& face = faces_[f.face];
+    // negative: no squared distance is below it
+    const double r2 = covering_squared_radius(radius, local_error(face, radius));
+    const std::array<Point, 3> c = local_corners(f);
+    const Point o = relative(center, face.v0);
+    return squared_distance(c[0], o) <= r2 && squared_distance(c[1], o) <= r2 && squared_distance(c[2], o) <= r2;
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: true only if the union of the balls of radius
@@ -269,10 +272,11 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
   {
-    const std::array<Point, 3> c = corners(f);
+    const Face& face = faces_[f.face];
+    const std::array<Point, 3> c = local_corners(f);
     const Point corner[3] = {c[0], c[1], c[2]};
-    // position_error_ bounds each coordinate; twice it bounds the distance
-    return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * position_error_);
+    // local_error() bounds each coordinate; twice it bounds the distance
+    return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * local_error(face, radius), face.v0);
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the depth of the fragment, counted from its whole
@@ -284,8 +288,8 @@ public:
   /// `lattice_excess()`, which `refine()` keeps at most 12 (less the bits of a cap's rows), so that
   /// a fragment can always be split down to the engine's floor, depth 40, with its corners' parameters
   /// exact in double precision (52 bits). Below it, in the maximality certificate's last levels, a
-  /// parameter is off by a few 2^-53 at most, which moves a corner by less than a quarter of
-  /// `position_error()`, within the margin of `is_covered()`.
+  /// parameter is off by a few 2^-53 at most, which moves a corner by a few units in the last place
+  /// of the face's extent, within the margin of `is_covered()`.
   int level(const Fragment& f) const
   {
     return int(f.level) + piece_k(f) - lattice_excess(f);
@@ -400,9 +404,11 @@ private:
               OutputIterator children) const
   {
     const Face& face = faces_[f.face];
+    // points and centres relative to the face's first corner (local_error())
+    const double error = local_error(face, radius);
     auto point = [&](const double (&q)[2]) {
       const std::array<double, 2> uv = map(q[0], q[1]);
-      return at(face, uv[0], uv[1]);
+      return at_local(face, uv[0], uv[1]);
     };
     // parameters and points: the corners of f, then either the midpoints of its edges or two cut points
     double q[6][2];
@@ -414,15 +420,17 @@ private:
     }
 
     // bit i of in[j]: point j is covered by ball i of `near`, as is_covered() decides it
-    const double r2 = covering_squared_radius(radius);
+    const double r2 = covering_squared_radius(radius, error);
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
     // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
     const std::size_t n = (std::min)(std::size_t(64), std::size_t(std::distance(near.begin(), near.end())));
     std::uint64_t in[6] = {0, 0, 0, 0, 0, 0};
     auto test = [&](int first, int last) {
       auto c = near.begin();
-      for(std::size_t i = 0; i < n; ++i, ++c)
-        for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], *c) <= r2) << i;
+      for(std::size_t i = 0; i < n; ++i, ++c) {
+        const Point o = relative(*c, face.v0);
+        for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], o) <= r2) << i;
+      }
     };
     test(0, 3);
     if(in[0] & in[1] & in[2]) return true;
@@ -479,7 +487,8 @@ private:
           const int b = m == 6 ? 0 : m == 5 ? 1 : 2;
           x[0] = (b + 1) % 3, x[1] = (b + 2) % 3, y[0] = y[1] = b;
         }
-        const double k0 = chord(x[0], y[0], *c), k1 = chord(x[1], y[1], *c);
+        const Point o = relative(*c, face.v0);
+        const double k0 = chord(x[0], y[0], o), k1 = chord(x[1], y[1], o);
         const double removed = x[0] == x[1] ? k0 * k1 : steps * steps - (steps - k0) * (steps - k1);
         if(removed > best) {
           best = removed, best_i = int(i);
@@ -488,7 +497,7 @@ private:
       }
       if(best_i >= 0) {
         // the cut points, moved towards the ball's corners until the computed points are in the ball
-        const Point& centre = *std::next(near.begin(), best_i);
+        const Point centre = relative(*std::next(near.begin(), best_i), face.v0);
         for(int e = 0; e < 2; ++e) {
           for(;; best_k[e] -= 1) {
             const double t = best_k[e] / steps;
@@ -543,16 +552,16 @@ private:
     double g[3], reach2 = 0;
     for(int i = 0; i < 3; ++i) g[i] = (p[0][i] + p[1][i] + p[2][i]) / 3;
     for(int j = 0; j < 3; ++j) reach2 = (std::max)(reach2, squared_distance(p[j], Point{{g[0], g[1], g[2]}}));
-    const double reach = (radius + 1.5 * std::sqrt(reach2) + 4 * position_error_) * (1 + 1e-9);
+    const double reach = (radius + 1.5 * std::sqrt(reach2) + 4 * error) * (1 + 1e-9);
     typedef internal::Triangle_in_ball_union Union;
     Point meeting[Union::max_balls + 2];
-    std::size_t k = Union::balls_near(around, g, reach, meeting);
+    std::size_t k = Union::balls_near(around, g, reach, meeting, face.v0);
     const bool all_kept = k <= Union::max_balls; // whether `meeting` holds every ball of `around` that can meet f
     k = (std::min)(k, Union::max_balls);
 
     // which of the points are strictly inside a ball of `meeting`, shrunk as the union test shrinks
     // them: a piece with a corner outside is not covered by the union
-    const double corner_error = 2 * position_error_; // position_error_ bounds each coordinate
+    const double corner_error = 2 * error; // error bounds each coordinate
     const Points_view balls{meeting, meeting + k};
     signed char inside[6] = {-1, -1, -1, -1, -1, -1}; // not known yet
     auto is_inside = [&](int j) {
@@ -568,7 +577,7 @@ private:
       const bool by_union =
           all_kept ? radius > corner_error && is_inside(t[0]) && is_inside(t[1]) && is_inside(t[2]) &&
                          Union::covers_with_corners_inside(corner, balls, radius, corner_error)
-                   : Union::covers(corner, around, radius, corner_error);
+                   : Union::covers(corner, around, radius, corner_error, face.v0);
       if(!by_union) *children++ = out[c];
     }
     return false;
@@ -793,15 +802,32 @@ private:
 
   // A ball of `radius` covers a fragment if the computed corners are within the square root of this
   // of its centre; negative if no fragment can be proven covered. The margin is more than the
-  // rounding of the corners (4 position errors) and of the squared distances (8 eps relative).
-  double covering_squared_radius(double radius) const
+  // rounding of the corners and the centre (4 times `error`, which bounds each coordinate's) and of
+  // the squared distances (8 eps relative).
+  static double covering_squared_radius(double radius, double error)
   {
-    const double r = radius - 4 * position_error_;
+    const double r = radius - 4 * error;
     return r > 0 ? r * r * (1 - 8 * std::numeric_limits<double>::epsilon()) : -1.;
   }
 
-  // the computed corners of a fragment, in the order of its offsets
-  std::array<Point, 3> corners(const Fragment& f) const
+  // The coverage tests compute relative to the face's first corner v0: a fragment's corner is
+  // u e1 + v e2, a ball's centre c - v0. Their rounding is then relative to the face's size and the
+  // radius, not to the coordinates: far from the origin, position_error() is much larger, and its
+  // margin left a band along the balls' boundaries, wider than the fragments at the depth floor,
+  // which no test could decide (a cube 10^6 times its size from the origin, at 100,000 points,
+  // dropped 49 million fragments there). This bounds the error of each coordinate of a corner,
+  // 4 eps (|e1| + |e2|) as for position_error() without v0, plus that of c - v0 for a centre that can
+  // cover a point of the face (within radius of it): eps / 2 (radius + |e1| + |e2|) per coordinate.
+  static double local_error(const Face& f, double radius)
+  {
+    double extent = 0;
+    for(int i = 0; i < 3; ++i) extent = (std::max)(extent, std::abs(f.e1[i]) + std::abs(f.e2[i]));
+    return 5 * std::numeric_limits<double>::epsilon() * (extent + radius);
+  }
+
+  // the computed corners of a fragment relative to its face's first corner, in the order of its
+  // offsets
+  std::array<Point, 3> local_corners(const Fragment& f) const
   {
     const Face& face = faces_[f.face];
     std::array<double, 2> q[3] = {corner_uv(f, 0), corner_uv(f, 1), corner_uv(f, 2)};
@@ -809,7 +835,7 @@ private:
       const Frame m = frame(face, f.piece);
       for(auto& x : q) x = m(x[0], x[1]);
     }
-    return {{at(face, q[0][0], q[0][1]), at(face, q[1][0], q[1][1]), at(face, q[2][0], q[2][1])}};
+    return {{at_local(face, q[0][0], q[0][1]), at_local(face, q[1][0], q[1][1]), at_local(face, q[2][0], q[2][1])}};
   }
 
   // the unit of the lattice of a fragment's corners, in its piece's parameters
@@ -819,6 +845,15 @@ private:
   {
     return Point{{f.v0[0] + u * f.e1[0] + v * f.e2[0], f.v0[1] + u * f.e1[1] + v * f.e2[1],
                   f.v0[2] + u * f.e1[2] + v * f.e2[2]}};
+  }
+  // at() less v0
+  static Point at_local(const Face& f, double u, double v)
+  {
+    return Point{{u * f.e1[0] + v * f.e2[0], u * f.e1[1] + v * f.e2[1], u * f.e1[2] + v * f.e2[2]}};
+  }
+  static Point relative(const Point& c, const Point& origin)
+  {
+    return Point{{c[0] - origin[0], c[1] - origin[1], c[2] - origin[2]}};
   }
   static Point cross(const Point& a, const Point& b)
   {

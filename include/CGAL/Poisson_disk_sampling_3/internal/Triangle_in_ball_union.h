@@ -48,26 +48,30 @@ public:
   static constexpr std::size_t max_balls = 16; // the triple loop is cubic; a subset is always correct
 
   /// `centers` may hold any samples: the ones that cannot meet the triangle are dropped here, and
-  /// any subset of the balls gives a correct (perhaps more often negative) answer.
+  /// any subset of the balls gives a correct (perhaps more often negative) answer. The corners may be
+  /// given relative to a point `origin`: the centres are then taken relative to it too (c - origin,
+  /// rounded; `corner_error` must cover that rounding as well).
   template <class PointRange>
-  static bool covers(const Point (&corner)[3], const PointRange& centers, double radius, double corner_error)
+  static bool covers(const Point (&corner)[3], const PointRange& centers, double radius, double corner_error,
+                     const Point& origin = Point{{0, 0, 0}})
   {
     const double r = radius - corner_error;
     if(!(r > 0)) return false;
     // most triangles that reach this test have a corner outside every ball: find out first
     for(const Point& p : corner)
-      if(!is_inside_one(p, centers, r)) return false;
-    return covers_with_corners_inside(corner, centers, radius, corner_error);
+      if(!is_inside_one(p, centers, r, origin)) return false;
+    return covers_with_corners_inside(corner, centers, radius, corner_error, origin);
   }
 
   /// whether p is strictly inside one of the balls of radius r (computed as `covers()` decides it
-  /// for the corners)
+  /// for the corners), with p and the centres taken relative to `origin` as in `covers()`
   template <class PointRange>
-  static bool is_inside_one(const Point& p, const PointRange& centers, double r)
+  static bool is_inside_one(const Point& p, const PointRange& centers, double r,
+                            const Point& origin = Point{{0, 0, 0}})
   {
     bool inside = false;
     for(const auto& c : centers) {
-      const double x = p[0] - c[0], y = p[1] - c[1], z = p[2] - c[2];
+      const double x = p[0] - (c[0] - origin[0]), y = p[1] - (c[1] - origin[1]), z = p[2] - (c[2] - origin[2]);
       inside |= x * x + y * y + z * z < r * r;
     }
     return inside;
@@ -76,14 +80,16 @@ public:
   /// Writes to `out` the balls of `centers`, in their order, whose centres are closer than `reach` to
   /// g, up to max_balls + 1 of them (`out` has room for max_balls + 2), and returns how many: max_balls
   /// + 1 means that more than max_balls are. Every ball is written, and the count passes it only if
-  /// it is that close: no branch on which balls are, a coin toss for the branch predictor.
+  /// it is that close: no branch on which balls are, a coin toss for the branch predictor. g and the
+  /// centres written are relative to `origin` (c - origin, rounded).
   template <class PointRange>
-  static std::size_t balls_near(const PointRange& centers, const double (&g)[3], double reach, Point* out)
+  static std::size_t balls_near(const PointRange& centers, const double (&g)[3], double reach, Point* out,
+                                const Point& origin = Point{{0, 0, 0}})
   {
     std::size_t k = 0;
     for(const auto& c : centers) {
-      const double x = c[0] - g[0], y = c[1] - g[1], z = c[2] - g[2];
-      out[k] = Point{{c[0], c[1], c[2]}};
+      out[k] = Point{{c[0] - origin[0], c[1] - origin[1], c[2] - origin[2]}};
+      const double x = out[k][0] - g[0], y = out[k][1] - g[1], z = out[k][2] - g[2];
       k += std::size_t(x * x + y * y + z * z < reach * reach) & std::size_t(k <= max_balls);
     }
     return k;
@@ -94,7 +100,7 @@ public:
   /// any triangle: the candidate points it checks include the corners.
   template <class PointRange>
   static bool covers_with_corners_inside(const Point (&corner)[3], const PointRange& centers, double radius,
-                                         double corner_error)
+                                         double corner_error, const Point& origin = Point{{0, 0, 0}})
   {
     const double r = radius - corner_error;
     // Only the balls that meet T matter: the union of the others misses T. Keep the balls that meet
@@ -110,7 +116,7 @@ public:
     }
     const double reach = (r + std::sqrt(reach2)) * (1 + 1e-9);
     Point kept[max_balls + 2];
-    const std::size_t k = (std::min)(balls_near(centers, g, reach, kept), max_balls);
+    const std::size_t k = (std::min)(balls_near(centers, g, reach, kept, origin), max_balls);
     if(k == 0) return false;
     // (Nothing cheaper comes first: a `Bounded` operation costs about what a double one does, and a
     // triangle that is not covered fails at one of the first candidate points.)
