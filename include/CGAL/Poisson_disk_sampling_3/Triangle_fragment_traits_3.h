@@ -424,13 +424,15 @@ private:
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
     // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
     const std::size_t n = (std::min)(std::size_t(64), std::size_t(std::distance(near.begin(), near.end())));
+    Point centres[64]; // the balls of `near`, relative to v0
+    {
+      auto c = near.begin();
+      for(std::size_t i = 0; i < n; ++i, ++c) centres[i] = relative(*c, face.v0);
+    }
     std::uint64_t in[6] = {0, 0, 0, 0, 0, 0};
     auto test = [&](int first, int last) {
-      auto c = near.begin();
-      for(std::size_t i = 0; i < n; ++i, ++c) {
-        const Point o = relative(*c, face.v0);
-        for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], o) <= r2) << i;
-      }
+      for(std::size_t i = 0; i < n; ++i)
+        for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], centres[i]) <= r2) << i;
     };
     test(0, 3);
     if(in[0] & in[1] & in[2]) return true;
@@ -475,8 +477,7 @@ private:
       double best = 0.25 * steps * steps;
       int best_i = -1, best_x[2] = {0, 0}, best_y[2] = {0, 0};
       double best_k[2] = {0, 0};
-      auto c = near.begin();
-      for(std::size_t i = 0; i < n; ++i, ++c) {
+      for(std::size_t i = 0; i < n; ++i) {
         const int m = int(in[0] >> i & 1) | int(in[1] >> i & 1) << 1 | int(in[2] >> i & 1) << 2;
         if(m == 0) continue;
         int x[2], y[2];
@@ -487,8 +488,7 @@ private:
           const int b = m == 6 ? 0 : m == 5 ? 1 : 2;
           x[0] = (b + 1) % 3, x[1] = (b + 2) % 3, y[0] = y[1] = b;
         }
-        const Point o = relative(*c, face.v0);
-        const double k0 = chord(x[0], y[0], o), k1 = chord(x[1], y[1], o);
+        const double k0 = chord(x[0], y[0], centres[i]), k1 = chord(x[1], y[1], centres[i]);
         const double removed = x[0] == x[1] ? k0 * k1 : steps * steps - (steps - k0) * (steps - k1);
         if(removed > best) {
           best = removed, best_i = int(i);
@@ -497,7 +497,7 @@ private:
       }
       if(best_i >= 0) {
         // the cut points, moved towards the ball's corners until the computed points are in the ball
-        const Point centre = relative(*std::next(near.begin(), best_i), face.v0);
+        const Point& centre = centres[best_i];
         for(int e = 0; e < 2; ++e) {
           for(;; best_k[e] -= 1) {
             const double t = best_k[e] / steps;
