@@ -54,7 +54,10 @@ INSTANTIATE_TEST_SUITE_P(Spheres, SphereSampling,
                          ::testing::Values(Case{{0, 0, 0}, 1, 0.1, 1}, Case{{0, 0, 0}, 1, 0.02, 2},
                                            Case{{1, -2, 3}, 4, 0.1, 3}, Case{{1000, 0, -500}, 0.5, 0.01, 4},
                                            Case{{0, 0, 0}, 1, 1.5, 5}, Case{{0, 0, 0}, 1, 1.99, 6},
-                                           Case{{0, 0, 0}, 1e-3, 2e-5, 7}));
+                                           Case{{0, 0, 0}, 1e-3, 2e-5, 7},
+                                           // far from the origin (see CoverageDoesNotDependOnWhereTheSphereIs):
+                                           // with the old margin, 5 of 6 seeds were not proven maximal
+                                           Case{{1e6 + 0.1, 7e5, -1e6}, 1, 0.021, 1}));
 
 TEST(SphereSampling, CountMatchesTheAreaAndIsReproducible)
 {
@@ -294,6 +297,40 @@ TEST(SphereFragments, CoverageIsRightNearThePoleWhereTheCornerTestFails)
   EXPECT_FALSE(traits.is_covered(f, c, radius)) << "ours must not";
   EXPECT_TRUE(traits.is_covered(f, c, far * (1 + 1e-9))) << "and is not merely conservative";
   EXPECT_FALSE(traits.is_covered(f, c, far * (1 - 1e-6)));
+}
+
+// The coverage test depends on a ball's centre relative to the sphere's, not on where the sphere is:
+// moved far from the origin by a translation that keeps every coordinate exact, the same rectangles
+// and balls get the same answers, at radii within 1e-12 of the smallest the test accepts. Its margin
+// used to be the rounding of a point's coordinates, 64 eps |c| (3.4e-8 here): the maximality
+// certificate, which splits pieces until one ball holds each, could then not prove the pieces within
+// that distance of a point where three balls' boundaries meet, which the sampler's union test, local,
+// had proven covered (5 of 6 seeds on a unit sphere at (1e6, 7e5, -1e6) with 20,000 points).
+TEST(SphereFragments, CoverageDoesNotDependOnWhereTheSphereIs)
+{
+  const Traits here({{0, 0, 0}}, 1), far({{1048576, 786432, -1048576}}, 1);
+  PDS::internal::Random rng(13);
+  // on a grid of 2^-30, so that the centre plus the offset, and back, are exact
+  auto exact = [](double x) { return std::ldexp(std::round(std::ldexp(x, 30)), -30); };
+  int covered = 0;
+  for(int trial = 0; trial < 1000; ++trial) {
+    const double t0 = rng.uniform() * 6, t1 = t0 + 0.001 + 0.05 * rng.uniform();
+    const double z0 = 2 * rng.uniform() - 1, z1 = std::min(1., z0 + 0.001 + 0.05 * rng.uniform());
+    const Rectangle f{t0, t1, z0, z1};
+    const double tc = t0 + (t1 - t0) * rng.uniform(), zc = z0 + (z1 - z0) * rng.uniform();
+    const double rc = std::sqrt(1 - zc * zc);
+    const Traits::Point w{{exact(rc * std::cos(tc)), exact(rc * std::sin(tc)), exact(zc)}};
+    const Traits::Point moved{{far.center()[0] + w[0], far.center()[1] + w[1], far.center()[2] + w[2]}};
+    // the smallest radius the test accepts, by bisection
+    double lo = 0, hi = 1;
+    for(int i = 0; i < 80; ++i) (here.is_covered(f, w, 0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+    for(double radius : {hi * (1 + 1e-12), hi * (1 - 1e-12)}) {
+      const bool h = here.is_covered(f, w, radius);
+      EXPECT_EQ(far.is_covered(f, moved, radius), h) << "trial " << trial << ", radius " << radius;
+      covered += h;
+    }
+  }
+  EXPECT_EQ(covered, 1000);
 }
 
 // The closed-form minimum agrees with a dense evaluation on many random rectangles and balls.

@@ -72,7 +72,10 @@ public:
   /// the engine splits it, and throws a dart at each piece, until single balls cover the pieces. The
   /// engine calls it on children that no single ball covers, with the samples near the dart; a model
   /// that does not define it gets single-ball tests only. `Triangle_fragment_traits_3` and
-  /// `Sphere_fragment_traits_3` define it.
+  /// `Sphere_fragment_traits_3` define it. Its margin must be larger than `is_covered()`'s:
+  /// the certificate (`is_maximal()`) proves coverage with single balls, on pieces small enough that
+  /// one ball holds each with its margin, which is possible only where the union test left at least
+  /// that much room. Margins relative to the fragment, not to the origin, keep both small everywhere.
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const;
 

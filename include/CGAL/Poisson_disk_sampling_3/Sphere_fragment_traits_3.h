@@ -555,7 +555,17 @@ private:
     b.w = Point{{center[0] - c_[0], center[1] - c_[1], center[2] - c_[2]}};
     const double w2 = b.w[0] * b.w[0] + b.w[1] * b.w[1] + b.w[2] * b.w[2];
     const double t = (r_ * r_ + w2 - radius * radius) / (2 * r_);
-    const double margin = error_ * (1 + (std::sqrt(w2) + radius) / r_) * (1 + radius / r_);
+    // The margin is relative to the sphere's radius, not to its centre's coordinates: no point of the
+    // sphere is computed here, and w, a difference, is within u |w| of its exact value (u = eps / 2).
+    // That moves u . w by u |w| and t by about 3 u |w|^2 / R; t's own rounding adds
+    // 3 u (R^2 + |w|^2 + radius^2) / R, and min_dot() is within 20 u |w| of the exact minimum (see
+    // is_covered_by_union()). For a ball that reaches the sphere, |w| <= R + radius, all of it is below
+    // the margin, 64 eps R (1 + (|w| + radius) / R) (1 + radius / R); a ball that does not reach it
+    // fails by far more than its rounding. (Far from the origin, position_error() includes the
+    // rounding of the centre's coordinates: as a margin, it left a band along the balls' boundaries
+    // that no single ball decided, where the union test, local, had proven coverage.)
+    const double margin = 64 * std::numeric_limits<double>::epsilon() * (r_ + std::sqrt(w2) + radius) *
+                          (1 + radius / r_);
     b.threshold = t + margin;
     b.wxy = length_xy(b.w);
     return b;
