@@ -335,6 +335,55 @@ TEST(Engine, ModelMayAssignItsOutputIterator)
   EXPECT_FALSE(PDS::internal::certify_coverage(traits, grid, d / 2).maximal);
 }
 
+// A model that proves nothing covered, which the concept allows (is_covered() is conservative), and
+// counts its live fragments. Every piece of the square is split down to the deferral size, D^2 / 2^24,
+// and waits there undecided: a million of them at D = 4. The certificate keeps at most a quarter of
+// its budget waiting, counts the others as not proven covered, and answers `false` with no witness
+// (the only sample covers every reference point). It used to keep them all: on a needle 10^-12 wide
+// and about 1.7 million D long, 134 million pieces, and `is_maximal()` ran out of memory.
+struct Covers_nothing
+{
+  static inline long live = 0, peak = 0;
+  struct Fragment
+  {
+    Square_traits::Fragment f;
+    explicit Fragment(const Square_traits::Fragment& f) : f(f) { count(); }
+    Fragment(const Fragment& o) : f(o.f) { count(); }
+    Fragment& operator=(const Fragment& o) = default;
+    ~Fragment() { --live; }
+    static void count() { peak = (std::max)(peak, ++live); }
+  };
+  typedef Square_traits::Point Point;
+  Square_traits square;
+  template <class Out> Out initial_fragments(Out out) const { *out++ = Fragment({0, 0, 1}); return out; }
+  double area(const Fragment& f) const { return square.area(f.f); }
+  Point reference_point(const Fragment& f) const { return square.reference_point(f.f); }
+  bool is_covered(const Fragment&, const Point&, double) const { return false; }
+  template <class Out> Out split(const Fragment& f, Out out) const
+  {
+    std::vector<Square_traits::Fragment> children;
+    square.split(f.f, std::back_inserter(children));
+    for(const auto& c : children) *out++ = Fragment(c);
+    return out;
+  }
+  double position_error() const { return 1e-15; }
+};
+
+TEST(Certificate, PiecesWaitingAreBounded)
+{
+  const double d = 4, xyz[3] = {0.5, 0.5, 0};
+  const PDS::internal::Point_hash_grid grid(2 * d, xyz, 1);
+  const std::size_t budget = 100000;
+  Covers_nothing::peak = 0;
+  const PDS::internal::Certificate c = PDS::internal::certify_coverage(Covers_nothing(), grid, d, 48, budget);
+  EXPECT_FALSE(c.maximal);
+  EXPECT_FALSE(c.has_witness);
+  EXPECT_NEAR(c.uncovered_area, 1, 1e-12) << "every piece counts as not proven covered";
+  EXPECT_EQ(Covers_nothing::live, 0);
+  // the pieces waiting, those of the next round, and for a moment the old copies of a growing vector
+  EXPECT_LE(Covers_nothing::peak, long(budget));
+}
+
 // Darts land uniformly on the free area: the first sample of each run is uniform on the square, so its
 // x coordinate over many seeds is uniform on [0, 1] (a Kolmogorov-Smirnov bound at the 0.1% level).
 TEST(Engine, FirstDartIsUniform)

@@ -30,13 +30,16 @@ struct Certificate
 /// it fails. Each root fragment is split with the model's own `split` until one sample's ball covers
 /// each piece (the model's conservative `is_covered`).
 ///
-/// The work is bounded. A piece whose reference point is farther than D from every sample (decided
-/// exactly) is a proven gap: it is refined only down to `leaf_area` for the area estimate; once a gap
-/// is proven and a quarter of `budget` more pieces decided, so is every piece not proven covered. Pieces
-/// still undecided below D^2 / 2^24 are deferred: in a maximal set they are the few that sit where two
-/// ball boundaries cross close to a piece's edge, and they are refined breadth-first down to
-/// `max_depth`, until a gap is proven or a budget is spent. Around a real gap, many pieces straddle its
-/// boundary; refining all of them depth-first would take time exponential in the depth.
+/// The work and the memory are bounded. A piece whose reference point is farther than D from every
+/// sample (decided exactly) is a proven gap: it is refined only down to `leaf_area` for the area
+/// estimate; once a gap is proven and a quarter of `budget` more pieces decided, so is every piece not
+/// proven covered. Pieces still undecided below D^2 / 2^24 are deferred: in a maximal set they are the
+/// few that sit where two ball boundaries cross close to a piece's edge, and they are refined
+/// breadth-first down to `max_depth`, until a gap is proven or a budget is spent. Around a real gap,
+/// many pieces straddle its boundary; refining all of them depth-first would take time exponential in
+/// the depth. At most `budget / 4` pieces wait at a time; beyond that a piece counts as not proven
+/// covered, as do the pieces left when the budget is spent: the answer is then `false` with no
+/// witness, undecided.
 template <class Traits>
 Certificate certify_coverage(const Traits& traits, const Point_hash_grid& samples, double d,
                              int max_depth = 48, std::size_t budget = 10000000)
@@ -84,13 +87,23 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     }
     return traits.area(item.fragment) <= leaf_area ? GAP_LEAF : SPLIT;
   };
-  auto split = [&](const Item& item, std::vector<Item>& out) {
+  // passes the children of a piece to put
+  auto split = [&](const Item& item, auto&& put) {
     children.clear();
     traits.split(item.fragment, std::back_inserter(children));
-    for(const Fragment& c : children) out.push_back(Item{c, level_or(traits, c, item.depth + 1)});
+    for(const Fragment& c : children) put(Item{c, level_or(traits, c, item.depth + 1)});
   };
 
   std::vector<Item> stack, deferred;
+  // a piece to refine later: in `list` while it holds fewer than budget / 4, else not proven covered
+  const std::size_t max_waiting = budget / 4;
+  auto defer = [&](const Item& item, std::vector<Item>& list) {
+    if(list.size() < max_waiting) list.push_back(item);
+    else {
+      result.maximal = false;
+      result.uncovered_area += traits.area(item.fragment);
+    }
+  };
   auto certify_root = [&](const Fragment& root) {
     if(!(traits.area(root) > 0)) return;
     stack.push_back(Item{root, level_or(traits, root, 0)});
@@ -107,8 +120,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       // which costs time and memory in proportion to the boundaries' length over that size.
       else if(result.has_witness && area <= leaf_area && decided_after_gap > budget / 4)
         result.uncovered_area += area;
-      else if(area <= defer_area || item.depth >= max_depth) deferred.push_back(item);
-      else split(item, stack);
+      else if(area <= defer_area || item.depth >= max_depth) defer(item, deferred);
+      else split(item, [&](const Item& c) { stack.push_back(c); });
     }
   };
   root_fragments(traits, d, Calling_output(&certify_root));
@@ -121,8 +134,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       ++spent;
       const Verdict v = decide(item);
       if(v == COVERED) continue;
-      if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) next.push_back(item);
-      else split(item, next);
+      if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) defer(item, next);
+      else split(item, [&](const Item& c) { defer(c, next); });
     }
     deferred.swap(next);
     if(std::all_of(deferred.begin(), deferred.end(), [&](const Item& i) { return i.depth >= max_depth; })) break;
