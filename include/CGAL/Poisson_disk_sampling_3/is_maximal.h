@@ -28,7 +28,9 @@ struct Maximality_check
   /// surface's area) before being counted)
   double uncovered_area = 0;
   /// when not maximal, a point of the surface proven farther than the minimum distance from every
-  /// sample (a place where one more sample fits), if one was found
+  /// sample (a place where one more sample fits), if one was found. `maximal` false and no point
+  /// means undecided: the certificate's bounds on work and memory ran out before it could prove the
+  /// pieces left either covered or uncovered (see the user manual, "Validation")
   std::optional<Point_3> uncovered_point;
   /// `maximal`
   explicit operator bool() const { return maximal; }
@@ -61,7 +63,10 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 /// Each face is split by midpoints until the ball of radius d around one sample holds the three
 /// corners of each piece, with a margin larger than the rounding error of the corners, down to pieces
 /// 2^-48 the size of their face. A `true` answer is a proof. A piece whose centroid is farther than d
-/// from every sample (decided exactly) is a proven gap, reported as `uncovered_point`.
+/// from every sample (decided exactly) is a proven gap, reported as `uncovered_point`. The work and
+/// the memory are bounded (10 million pieces in the last phase, 2.5 million waiting at a time): on
+/// slivers far thinner than d, which midpoint subdivision must cut across as often as along, the
+/// answer may be `false` with no `uncovered_point`, undecided.
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
