@@ -339,8 +339,8 @@ TEST(Engine, ModelMayAssignItsOutputIterator)
 // counts its live fragments. Every piece of the square is split down to the deferral size, D^2 / 2^24,
 // and waits there undecided: a million of them at D = 4. The certificate keeps at most a quarter of
 // its budget waiting, counts the others as not proven covered, and answers `false` with no witness
-// (the only sample covers every reference point). It used to keep them all: on a needle 10^-12 wide
-// and about 1.7 million D long, 134 million pieces, and `is_maximal()` ran out of memory.
+// (the only sample covers every reference point). It used to keep them all: on a cap 10^-12 wide and
+// 1.7 million D long, with 1.27 million samples, `is_maximal()` ran out of memory at 4 GB.
 struct Covers_nothing
 {
   static inline long live = 0, peak = 0;
