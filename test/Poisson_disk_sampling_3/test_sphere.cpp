@@ -302,7 +302,7 @@ TEST(SphereFragments, CoverageIsRightNearThePoleWhereTheCornerTestFails)
 // The coverage test depends on a ball's centre relative to the sphere's, not on where the sphere is:
 // moved far from the origin by a translation that keeps every coordinate exact, the same rectangles
 // and balls get the same answers, at radii within 1e-12 of the smallest the test accepts. Its margin
-// used to be the rounding of a point's coordinates, 64 eps |c| (3.4e-8 here): the maximality
+// used to be the rounding of a point's coordinates, 64 eps |c| times about 2 (3e-8 here): the maximality
 // certificate, which splits pieces until one ball holds each, could then not prove the pieces within
 // that distance of a point where three balls' boundaries meet, which the sampler's union test, local,
 // had proven covered (5 of 6 seeds on a unit sphere at (1e6, 7e5, -1e6) with 20,000 points).
