@@ -95,14 +95,15 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
 
   std::vector<Item> stack, deferred;
+  auto not_proven = [&](const Item& item) {
+    result.maximal = false;
+    result.uncovered_area += traits.area(item.fragment);
+  };
   // a piece to refine later: in `list` while it holds fewer than budget / 4, else not proven covered
   const std::size_t max_waiting = budget / 4;
   auto defer = [&](const Item& item, std::vector<Item>& list) {
     if(list.size() < max_waiting) list.push_back(item);
-    else {
-      result.maximal = false;
-      result.uncovered_area += traits.area(item.fragment);
-    }
+    else not_proven(item);
   };
   auto certify_root = [&](const Fragment& root) {
     if(!(traits.area(root) > 0)) return;
@@ -140,10 +141,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     deferred.swap(next);
     if(std::all_of(deferred.begin(), deferred.end(), [&](const Item& i) { return i.depth >= max_depth; })) break;
   }
-  for(const Item& item : deferred) {
-    result.maximal = false;
-    result.uncovered_area += traits.area(item.fragment);
-  }
+  for(const Item& item : deferred) not_proven(item);
   return result;
 }
 
