@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -320,6 +321,37 @@ struct Quarters_traits : Square_traits
   }
   template <class Out> Out initial_fragments(Out out, double) const { return initial_fragments(out); }
 };
+
+// A model whose roots for the distance far outnumber its roots without it (here 4096 squares instead
+// of one) is refused before they are stored when they exceed four per point of the bound plus six per
+// root without the distance, with a message that says so; under a larger bound it is sampled.
+struct Many_roots_traits : Square_traits
+{
+  template <class Out> Out initial_fragments(Out out) const { return Square_traits::initial_fragments(out); }
+  template <class Out> Out initial_fragments(Out out, double) const
+  {
+    for(int i = 0; i < 64; ++i)
+      for(int j = 0; j < 64; ++j) *out++ = Fragment{i / 64., j / 64., 1 / 64.};
+    return out;
+  }
+};
+
+TEST(Engine, RootsForTheDistanceCountAgainstTheBound)
+{
+  const Many_roots_traits traits;
+  std::vector<Square_traits::Sample> samples;
+  try {
+    PDS::sample_surface(traits, std::back_inserter(samples),
+                        PDS::parameters::minimum_distance(0.05).maximum_number_of_points(1000));
+    ADD_FAILURE() << "not refused";
+  } catch(const PDS::Point_limit_exceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("pieces would outnumber its faces by 4095"), std::string::npos) << e.what();
+    EXPECT_TRUE(samples.empty());
+  }
+  PDS::sample_surface(traits, std::back_inserter(samples),
+                      PDS::parameters::minimum_distance(0.05).maximum_number_of_points(1100));
+  EXPECT_GT(samples.size(), 250u);
+}
 
 TEST(Engine, ModelMayAssignItsOutputIterator)
 {
@@ -644,7 +676,7 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
   typedef Traits::Point P;
   Random rng(29);
   Refine_counts counts;
-  int cut = 0, deep = 0;
+  int cut = 0, deep = 0, blocks = 0, halves_dropped = 0;
   auto same = [](const Fragment& a, const Fragment& b) {
     return a.u == b.u && a.v == b.v && a.face == b.face && a.level == b.level && a.piece == b.piece &&
            a.e[0][0] == b.e[0][0] && a.e[0][1] == b.e[0][1] && a.e[1][0] == b.e[1][0] && a.e[1][1] == b.e[1][1];
@@ -697,6 +729,27 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
         deep += step == 9;
       }
     balls(f, near, around, radius);
+
+    if(Traits::is_block(f)) { // its halves that no single ball covers (no union test: they are long)
+      std::vector<Fragment> got, halves, expected;
+      traits.split(f, std::back_inserter(halves));
+      const bool covered = traits.refine(f, near, around, radius, std::back_inserter(got));
+      bool one = false;
+      for(const P& c : near) one = one || traits.is_covered(f, c, radius);
+      ASSERT_EQ(covered, one) << "trial " << trial;
+      if(!covered) {
+        for(const Fragment& h : halves) {
+          bool single = false;
+          for(const P& c : near) single = single || traits.is_covered(h, c, radius);
+          if(!single) expected.push_back(h);
+        }
+      }
+      ASSERT_EQ(got.size(), expected.size()) << "trial " << trial;
+      for(std::size_t i = 0; i < got.size(); ++i) EXPECT_TRUE(same(got[i], expected[i])) << "trial " << trial;
+      blocks += !got.empty();
+      halves_dropped += !covered && got.size() < halves.size();
+      continue;
+    }
 
     std::vector<Fragment> expected; // what splitting keeps
     const bool expected_covered = step_by_operations(traits, f, near, around, radius, expected, counts);
@@ -755,6 +808,8 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
   EXPECT_GT(counts.child_kept, 500);
   EXPECT_GT(cut, 300);
   EXPECT_GT(deep, 20);
+  EXPECT_GT(blocks, 100);
+  EXPECT_GT(halves_dropped, 50);
 }
 
 // level() is the depth by size: a fragment's area is at most 4^-level() of its root's and more than
@@ -881,11 +936,14 @@ TEST(TriangleFragments, LevelIsTheDepthBySizeAndCutsLeaveRoomForIt)
   EXPECT_GT(at_floor, 400);
 }
 
-// The pieces of a long thin triangle (for a minimum distance D) tile it: their areas add up to the
-// triangle's, and every point of the triangle lies in exactly one piece (or on the boundary between
-// pieces). They are few (fewer than 2 L / max(D, width) for a face L long), no longer than four
-// times max(D, shortest edge), nor than 4 L 2^-depth (the depth the engine's floor counts). Needles
-// and caps (corners nearly in line), of aspect ratios up to 10^4, with D from L down to L / 30,000.
+// The pieces of a long thin triangle (for a minimum distance D): one or two blocks of rows, whose
+// halves, split down to the rows' triangles, tile it: their areas add up to the block's, and every
+// point of the triangle lies in exactly one row triangle (or on the boundary between them). The rows'
+// triangles are few (fewer than 2 L / max(D, width) for a face L long), no longer than four times
+// max(D, shortest edge), nor than 4 L 2^-depth (the depth the engine's floor counts). A block's
+// random points and reference point lie in its rows' triangles, and a ball holds it (is_covered())
+// if it holds their corners with a little room, not if one of them is outside. Needles and caps
+// (corners nearly in line), of aspect ratios up to 10^4, with D from L down to L / 30,000.
 TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;
@@ -898,7 +956,7 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
   };
   auto dot = [](const P& a, const P& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
   auto norm = [&](const P& a) { return std::sqrt(dot(a, a)); };
-  int cut = 0, caps_cut = 0, most_rows = 0;
+  int cut = 0, caps_cut = 0, most_rows = 0, blocks_checked = 0, uniform_checked = 0;
   for(int trial = 0; trial < 400; ++trial) {
     P q[3];
     const double thinness = std::pow(10., -4 * rng.uniform());
@@ -916,9 +974,29 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
     const double L = std::max({edges[0], edges[1], edges[2]}), shortest = std::min({edges[0], edges[1], edges[2]});
     const double width = 2 * area / L;
     const double d = L * std::pow(10., -4.5 * rng.uniform()); // down to L / 30,000: up to 2^12 rows
+    std::vector<Fragment> roots;
+    traits.initial_fragments(std::back_inserter(roots), d);
+    ASSERT_FALSE(roots.empty());
+    EXPECT_LE(roots.size(), 2u) << "trial " << trial;
+    // the blocks split down to the rows' triangles, each block's halves checked on the way
     std::vector<Fragment> pieces;
-    traits.initial_fragments(std::back_inserter(pieces), d);
-    ASSERT_FALSE(pieces.empty());
+    std::function<void(const Fragment&, std::vector<Fragment>&)> expand = [&](const Fragment& f,
+                                                                              std::vector<Fragment>& leaves) {
+      if(!Traits::is_block(f)) {
+        leaves.push_back(f);
+        return;
+      }
+      std::vector<Fragment> halves;
+      traits.split(f, std::back_inserter(halves));
+      double sum = 0;
+      for(const Fragment& h : halves) {
+        sum += traits.area(h);
+        EXPECT_EQ(traits.level(h), traits.level(f) + 1) << "trial " << trial;
+        expand(h, leaves);
+      }
+      EXPECT_NEAR(sum, traits.area(f), 1e-12 * traits.area(f)) << "trial " << trial;
+    };
+    for(const Fragment& r : roots) expand(r, pieces);
     EXPECT_LE(double(pieces.size()), 2 * L / std::max(d, width) + 1) << "trial " << trial;
     if(pieces.size() > 1) {
       ++cut;
@@ -970,10 +1048,61 @@ TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
       ASSERT_LE(inside, 1) << "trial " << trial << ": pieces overlap";
       ASSERT_GE(inside + near_edge, 1) << "trial " << trial << ": a point of the face is in no piece";
     }
+
+    // a few blocks: their points against their rows' triangles
+    for(int b = 0; b < 4 && Traits::is_block(roots[0]); ++b) {
+      Fragment block = roots[0];
+      for(int depth = int(rng.uniform_index(4)); depth > 0; --depth) {
+        std::vector<Fragment> halves;
+        traits.split(block, std::back_inserter(halves));
+        const Fragment& h = halves[rng.uniform_index(halves.size())];
+        if(!Traits::is_block(h)) break;
+        block = h;
+      }
+      std::vector<Fragment> leaves;
+      expand(block, leaves);
+      std::vector<std::array<P, 3>> rows;
+      for(const Fragment& f : leaves) rows.push_back(fragment_corners(traits, f));
+      auto in_rows = [&](const P& x) {
+        for(const auto& c : rows) {
+          const double whole = dot(cross(sub(c[1], c[0]), sub(c[2], c[0])), normal);
+          double lowest = 1;
+          for(int j = 0; j < 3; ++j)
+            lowest = std::min(lowest, dot(cross(sub(c[(j + 1) % 3], x), sub(c[(j + 2) % 3], x)), normal) / whole);
+          if(lowest >= -1e-7) return true;
+        }
+        return false;
+      };
+      for(int i = 0; i < 50; ++i) EXPECT_TRUE(in_rows(traits.random_sample(block, rng)->point)) << "trial " << trial;
+      const P g = traits.reference_point(block);
+      EXPECT_TRUE(in_rows(g)) << "trial " << trial;
+      double farthest = 0;
+      for(const auto& c : rows)
+        for(const P& x : c) farthest = std::max(farthest, norm(sub(x, g)));
+      EXPECT_TRUE(traits.is_covered(block, g, 1.01 * farthest)) << "trial " << trial;
+      EXPECT_FALSE(traits.is_covered(block, g, 0.99 * farthest)) << "trial " << trial;
+      ++blocks_checked;
+      // uniform: its first half (or row triangle) gets its share of the random points (within 5 sigma)
+      if(leaves.size() <= 32) {
+        std::vector<Fragment> halves, first;
+        traits.split(block, std::back_inserter(halves));
+        expand(halves[0], first);
+        const double share = traits.area(halves[0]) / traits.area(block);
+        rows.clear();
+        for(const Fragment& f : first) rows.push_back(fragment_corners(traits, f));
+        int hits = 0;
+        const int n = 1000;
+        for(int i = 0; i < n; ++i) hits += in_rows(traits.random_sample(block, rng)->point);
+        EXPECT_NEAR(double(hits) / n, share, 5 * std::sqrt(share * (1 - share) / n) + 1e-3) << "trial " << trial;
+        ++uniform_checked;
+      }
+    }
   }
   EXPECT_GT(cut, 200); // most faces are cut, caps included, some into the most rows
   EXPECT_GT(caps_cut, 100);
   EXPECT_GT(most_rows, 10);
+  EXPECT_GT(blocks_checked, 500);
+  EXPECT_GT(uniform_checked, 100);
 }
 
 // grid_cell() is the floor of the scaled coordinate, on both sides of zero and at integers.

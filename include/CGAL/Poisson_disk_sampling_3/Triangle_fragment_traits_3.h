@@ -29,8 +29,9 @@ namespace Poisson_disk_sampling_3 {
 /// `add_triangle()`; the fragments are triangles of a root piece's parameter space: the sub-triangles
 /// of its regular 4-to-1 midpoint subdivision, and the pieces that `refine()` leaves when it cuts off
 /// along a chord what one ball holds (see "Chord cuts" below). A root piece is a whole face, or, for a
-/// long thin face and a given minimum distance D, one of the pieces `initial_fragments(out, D)` cuts
-/// it into (see "Long thin triangles" below). A fragment is stored as its face, its piece, one corner
+/// long thin face and a given minimum distance D, one of the rows' triangles of the blocks that
+/// `initial_fragments(out, D)` writes for it; the blocks (trapezoids: `is_block()`) are fragments too
+/// (see "Long thin triangles" below). A fragment is stored as its face, its piece, one corner
 /// in the piece's parameter space and the other two as integer offsets from it in units of 2^-level
 /// (32 bytes); the face is V0 + u (V1 - V0) + v (V2 - V0), and pieces have corners at dyadic (u, v),
 /// so that the corners of fragments have exact dyadic parameters (see `level()`).
@@ -41,8 +42,8 @@ namespace Poisson_disk_sampling_3 {
 ///
 /// Long thin triangles: subdivision keeps a triangle's shape, so a face L long and w wide would be cut
 /// into slivers as thin as the face, about (L / D)^2 of them around a face narrower than D. With a
-/// minimum distance D, `initial_fragments(out, D)` therefore cuts such faces first, with dyadic
-/// parameters so that the pieces tile the face exactly:
+/// minimum distance D, such faces are therefore cut into rows, with dyadic parameters so that the
+/// pieces tile the face exactly:
 /// - a face whose largest angle is below 120 degrees (a needle: one short edge, two long ones) into
 ///   2^k rows parallel to its shortest edge, each row a trapezoid cut into two triangles, the last
 ///   row (at the far corner) a triangle: 2^(k+1) - 1 pieces;
@@ -55,6 +56,17 @@ namespace Poisson_disk_sampling_3 {
 /// one to two times max(D, w) long (up to four times in a cap). A face with L < 4 max(D, w) stays
 /// whole: cutting it would save fewer darts than the pieces cost (lion.off at a million points is as
 /// fast either way).
+///
+/// The rows are made as darts reach them: `initial_fragments(out, D)` writes one fragment per needle,
+/// the block of all its rows (its one row's triangle if it has one row), a trapezoid between two row
+/// lines. A block that gets a dart and that no ball holds is split into its halves, the blocks of
+/// the first and of the last half of its rows, and a block of two rows into the rows' triangles, so
+/// that the fragments follow the darts instead of the faces' length over D. The halves of a block
+/// get the single-ball test only: they are long, and the union test, cubic in the balls that meet
+/// them, cost more than the darts it saved (blade.off at 10,000 points: 9.7 darts a point instead of
+/// 15.2, but 0.087 s instead of 0.064). Longest-edge bisection, which would keep every fragment a
+/// triangle, cuts a needle along its length as often as across it, and was slower still (see
+/// `benchmark/README.md`, change 43).
 ///
 /// Chord cuts (not in the paper): when a dart finds a fragment at most 4 D across partly covered, and
 /// a ball of `near` holds one or two of its corners, `refine()` cuts off the part of the fragment
@@ -185,8 +197,9 @@ public:
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the root pieces for the minimum distance
-  /// `minimum_distance`, which tile the triangles of positive area: whole triangles, and the pieces of
-  /// the long thin ones (see the class description). The engine and the maximality certificate use it.
+  /// `minimum_distance`, which tile the triangles of positive area: whole triangles, and for the long
+  /// thin ones one or two blocks of rows (see the class description): at most two per triangle. The
+  /// engine and the maximality certificate use it.
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const
   {
@@ -202,16 +215,16 @@ public:
         double P[2], Q[2], R[2];
         const int rows_log2 = needle(f, kind, k, P, Q, R);
         if(rows_log2 < 0) continue; // the cap's split point is a corner: no second needle
-        const std::uint32_t rows = std::uint32_t(1) << rows_log2;
-        for(std::uint32_t j = 0; j < rows; ++j) {
-          *out++ = make_fragment(i, piece_code(kind, k, 0, j));
-          if(j + 1 < rows) // the last row is one triangle
-            *out++ = make_fragment(i, piece_code(kind, k, 1, j));
-        }
+        // the block of all its rows, or its one row (the last row is one triangle)
+        *out++ = make_fragment(i, piece_code(kind, k, 0, 0, rows_log2));
       }
     }
     return out;
   }
+
+  /// whether `f` is a block of rows of a long thin face (a trapezoid, see "Long thin triangles") rather
+  /// than a triangle
+  static bool is_block(const Fragment& f) { return (f.piece >> 20) != 0; }
 
   /// area of a fragment: its face's times the share of its piece and of its triangle in the piece
   /// (a child of the subdivision has a quarter of its parent's)
@@ -228,6 +241,7 @@ public:
   std::optional<Sample> random_sample(const Fragment& f, RandomGenerator& rng) const
   {
     double a = rng.uniform(), b = rng.uniform();
+    if(is_block(f)) return block_point(f, a, b);
     if(a + b > 1) { a = 1 - a; b = 1 - b; }
     const double w = unit(f);
     std::array<double, 2> uv{{f.u + w * (a * f.e[0][0] + b * f.e[1][0]), f.v + w * (a * f.e[0][1] + b * f.e[1][1])}};
@@ -246,43 +260,60 @@ public:
   /// the centroid of the fragment
   Point reference_point(const Fragment& f) const
   {
+    if(is_block(f)) return block_point(f, 0.5, 0.5).point;
     const double w = unit(f);
     std::array<double, 2> uv{{f.u + w * (f.e[0][0] + f.e[1][0]) / 3, f.v + w * (f.e[0][1] + f.e[1][1]) / 3}};
     if(f.piece != 0) uv = frame(faces_[f.face], f.piece)(uv[0], uv[1]);
     return at(faces_[f.face], uv[0], uv[1]);
   }
 
-  /// true only if the three corners are within `radius` of `center` by more than their rounding error,
-  /// so that the exact sub-triangle lies in the ball (computed relative to the face's first corner:
-  /// see `local_error()`)
+  /// true only if the three corners (a block's four) are within `radius` of `center` by more than their
+  /// rounding error, so that the exact sub-triangle (or trapezoid) lies in the ball (computed relative
+  /// to the face's first corner: see `local_error()`)
   bool is_covered(const Fragment& f, const Point& center, double radius) const
   {
     const Face& face = faces_[f.face];
     // negative: no squared distance is below it
     const double r2 = covering_squared_radius(radius, local_error(face, radius));
-    const std::array<Point, 3> c = local_corners(f);
     const Point o = relative(center, face.v0);
+    if(is_block(f)) {
+      const Block b(face, f.piece);
+      for(int j = 0; j < 4; ++j)
+        if(!(squared_distance(b.point(face, j), o) <= r2)) return false;
+      return true;
+    }
+    const std::array<Point, 3> c = local_corners(f);
     return squared_distance(c[0], o) <= r2 && squared_distance(c[1], o) <= r2 && squared_distance(c[2], o) <= r2;
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: true only if the union of the balls of radius
   /// `radius` around `centers` holds the fragment, proven with a bound on every rounding error (see
   /// `internal/Triangle_in_ball_union.h`). Covers the fragments that straddle the boundary between
-  /// two balls, which no single ball holds.
+  /// two balls, which no single ball holds. A block is tested as its two triangles.
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
   {
     const Face& face = faces_[f.face];
+    // local_error() bounds each coordinate; twice it bounds the distance
+    const double error = 2 * local_error(face, radius);
+    typedef internal::Triangle_in_ball_union Union;
+    if(is_block(f)) { // its triangles (p_a, q_a, p_b) and (q_a, q_b, p_b), the second empty at the end
+      const Block b(face, f.piece);
+      const Point t0[3] = {b.point(face, 0), b.point(face, 1), b.point(face, 3)};
+      const Point t1[3] = {b.point(face, 1), b.point(face, 2), b.point(face, 3)};
+      return Union::covers(t0, centers, radius, error, face.v0) &&
+             (b.tip || Union::covers(t1, centers, radius, error, face.v0));
+    }
     const std::array<Point, 3> c = local_corners(f);
     const Point corner[3] = {c[0], c[1], c[2]};
-    // local_error() bounds each coordinate; twice it bounds the distance
-    return internal::Triangle_in_ball_union::covers(corner, centers, radius, 2 * local_error(face, radius), face.v0);
+    return Union::covers(corner, centers, radius, error, face.v0);
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the depth of the fragment, counted from its whole
   /// face, by its size: the largest L such that its area is at most 4^-L times its root piece's, plus
   /// k for a piece (a row is about 2^-k of the face's length; 0 for a whole face). For the children
-  /// of midpoint subdivision, the level of the corners' lattice plus k.
+  /// of midpoint subdivision, the level of the corners' lattice plus k. For a block of 2^m rows,
+  /// k - m: one more for each halving, k for the rows' triangles.
   /// A chord cut puts its pieces on a lattice up to 6 levels finer than their size alone would need
   /// (the cut points are multiples of 1/64 of their edges): the lattice level exceeds the depth by
   /// `lattice_excess()`, which `refine()` keeps at most 12 (less the bits of a cap's rows), so that
@@ -292,6 +323,7 @@ public:
   /// of the face's extent, within the margin of `is_covered()`.
   int level(const Fragment& f) const
   {
+    if(is_block(f)) return piece_k(f) - Piece(f.piece).m;
     return int(f.level) + piece_k(f) - lattice_excess(f);
   }
 
@@ -302,11 +334,16 @@ public:
     internal::prefetch_object(&faces_[f.face]); // 88 bytes: two or three cache lines
   }
 
-  /// the four children of the midpoint subdivision
+  /// the four children of the midpoint subdivision; for a block, its halves (see the class description)
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator out) const
   {
     CGAL_precondition(f.level < 63);
+    if(is_block(f)) {
+      Fragment halves[4];
+      const int n = block_halves(f, halves);
+      return std::copy(halves, halves + n, out);
+    }
     for(int c = 0; c < 4; ++c) *out++ = child(f, c);
     return out;
   }
@@ -316,14 +353,15 @@ public:
   /// nothing). Otherwise cuts off what one ball holds along a chord (see "Chord cuts" above), or, if
   /// no ball takes a quarter of `f`, splits it as `split()` does; and writes the pieces or children
   /// that neither one point of `near` nor the union of the balls around `around` covers, as
-  /// `is_covered()` and `is_covered_by_union()` decide it. The points the triangles share are computed
-  /// once, and each ball is tested against each of them once; the union test gets only the balls
-  /// that can meet `f`.
+  /// `is_covered()` and `is_covered_by_union()` decide it (a block's halves, the first test only).
+  /// The points the triangles share are computed once, and each ball is tested against each of them
+  /// once; the union test gets only the balls that can meet `f`.
   template <class PointRange, class OutputIterator>
   bool refine(const Fragment& f, const PointRange& near, const PointRange& around, double radius,
               OutputIterator children) const
   {
     if(f.piece == 0) return refine(f, Whole_face(), near, around, radius, children);
+    if(is_block(f)) return refine_block(f, near, radius, children);
     return refine(f, frame(faces_[f.face], f.piece), near, around, radius, children);
   }
 
@@ -423,17 +461,10 @@ private:
     const double r2 = covering_squared_radius(radius, error);
     // (64 is more than the engine ever passes: balls of radius D / 2 around samples at least D apart
     // are disjoint, so at most 27 samples lie within D of a point; and a subset is still sound)
-    const std::size_t n = (std::min)(std::size_t(64), std::size_t(std::distance(near.begin(), near.end())));
     Point centres[64]; // the balls of `near`, relative to v0
-    {
-      auto c = near.begin();
-      for(std::size_t i = 0; i < n; ++i, ++c) centres[i] = relative(*c, face.v0);
-    }
+    const std::size_t n = load_centres(near, face.v0, centres);
     std::uint64_t in[6] = {0, 0, 0, 0, 0, 0};
-    auto test = [&](int first, int last) {
-      for(std::size_t i = 0; i < n; ++i)
-        for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], centres[i]) <= r2) << i;
-    };
+    auto test = [&](int first, int last) { cover_bits(p, first, last, centres, n, r2, in); };
     test(0, 3);
     if(in[0] & in[1] & in[2]) return true;
 
@@ -583,6 +614,23 @@ private:
     return false;
   }
 
+  // the first 64 balls of `near` (see refine()), relative to `origin`; returns how many
+  template <class PointRange>
+  static std::size_t load_centres(const PointRange& near, const Point& origin, Point (&centres)[64])
+  {
+    std::size_t n = 0;
+    for(auto c = near.begin(); c != near.end() && n < 64; ++c) centres[n++] = relative(*c, origin);
+    return n;
+  }
+
+  // bit i of in[j], for j in [first, last): p[j] is within the square root of r2 of centre i
+  static void cover_bits(const Point* p, int first, int last, const Point* centres, std::size_t n, double r2,
+                         std::uint64_t* in)
+  {
+    for(std::size_t i = 0; i < n; ++i)
+      for(int j = first; j < last; ++j) in[j] |= std::uint64_t(squared_distance(p[j], centres[i]) <= r2) << i;
+  }
+
   static Fragment make_fragment(std::uint32_t face, std::uint32_t piece)
   {
     Fragment f;
@@ -632,20 +680,118 @@ private:
 
   // Pieces: bits 0-1 the kind (0 the whole face, 1 a row of a needle, 2 and 3 a row of the first or
   // second needle of a cap), 2-5 k (a needle's rows are 2^k; a cap's split point is a multiple of
-  // 2^-k along the edge), 6 which triangle of the row, 7-24 the row.
+  // 2^-k along the edge), 6 which triangle of the row, 7-19 the row, 20-23 m: 0 for a triangle of a
+  // row, else the block of the 2^m rows from the row on (see `Block`).
   static constexpr int max_k = 12;
-  static std::uint32_t piece_code(int kind, int k, int half, std::uint32_t row)
+  static std::uint32_t piece_code(int kind, int k, int half, std::uint32_t row, int m = 0)
   {
-    return std::uint32_t(kind) | std::uint32_t(k) << 2 | std::uint32_t(half) << 6 | row << 7;
+    return std::uint32_t(kind) | std::uint32_t(k) << 2 | std::uint32_t(half) << 6 | row << 7 | std::uint32_t(m) << 20;
   }
   struct Piece // a piece code, decoded
   {
-    int kind, k, half;
+    int kind, k, half, m;
     double row;
     explicit Piece(std::uint32_t code)
-        : kind(int(code & 3)), k(int(code >> 2 & 15)), half(int(code >> 6 & 1)), row(double(code >> 7))
+        : kind(int(code & 3)), k(int(code >> 2 & 15)), half(int(code >> 6 & 1)), m(int(code >> 20 & 15)),
+          row(double(code >> 7 & 0x1FFF))
     {}
   };
+
+  // A block: the rows [a, b) of a needle (P, Q, R) of 2^r rows, b = a + 2^m: the part between the
+  // lines from p_t = P + t (R - P) to q_t = Q + t (R - Q) at t = a h and t = b h, h = 2^-r. It is the
+  // trapezoid (p_a, q_a, q_b, p_b), a triangle at the needle's end (b = 2^r: q_b = p_b = R). Its
+  // corners and the ends of its middle line, at c = a + 2^(m - 1), are computed in the face's
+  // parameters as frame() computes the corners of the rows' triangles, so that they are the same
+  // numbers (dyadic: exact).
+  struct Block
+  {
+    double P[2], Q[2], R[2];
+    double t0, t1;  // a h and b h
+    bool tip;       // b is the needle's end
+    double q[6][2]; // p_a, q_a, q_b, p_b, p_c, q_c
+    Block(const Face& face, std::uint32_t code)
+    {
+      const Piece piece(code);
+      const int rows_log2 = needle(face, piece.kind, piece.k, P, Q, R);
+      const double h = internal::power_of_half(std::size_t(rows_log2));
+      const double span = double(std::uint32_t(1) << piece.m);
+      const double t[3] = {piece.row * h, (piece.row + span) * h, (piece.row + 0.5 * span) * h};
+      t0 = t[0], t1 = t[1];
+      tip = piece.row + span == double(std::uint32_t(1) << rows_log2);
+      const int at_p[3] = {0, 3, 4}, at_q[3] = {1, 2, 5};
+      for(int j = 0; j < 3; ++j)
+        for(int i = 0; i < 2; ++i) {
+          q[at_p[j]][i] = P[i] + t[j] * (R[i] - P[i]);
+          q[at_q[j]][i] = Q[i] + t[j] * (R[i] - Q[i]);
+        }
+    }
+    // point j of q, relative to the face's first corner
+    Point point(const Face& face, int j) const { return at_local(face, q[j][0], q[j][1]); }
+  };
+
+  // The point of block f at (x, y) in [0, 1]^2, uniformly distributed for x and y uniform: x is the
+  // share of the block's area between the line at a and the point's line (the needle's area from
+  // t = 0 to t is 1 - (1 - t)^2 of it), y the share of the way from p_t to q_t.
+  Sample block_point(const Fragment& f, double x, double y) const
+  {
+    const Face& face = faces_[f.face];
+    const Block b(face, f.piece);
+    const double w0 = 1 - b.t0, w1 = 1 - b.t1;
+    const double t = (std::min)(b.t1, (std::max)(b.t0, 1 - std::sqrt(w0 * w0 - x * (w0 * w0 - w1 * w1))));
+    Sample s;
+    s.face = f.face;
+    s.u = b.P[0] + t * (b.R[0] - b.P[0]) + y * (1 - t) * (b.Q[0] - b.P[0]);
+    s.v = b.P[1] + t * (b.R[1] - b.P[1]) + y * (1 - t) * (b.Q[1] - b.P[1]);
+    s.point = at(face, s.u, s.v);
+    return s;
+  }
+
+  // The halves of a block, which tile it: two blocks of half as many rows, or, for a block of two
+  // rows, the rows' triangles (three where the second row is the needle's last, one triangle).
+  // Writes them and returns how many.
+  int block_halves(const Fragment& f, Fragment (&halves)[4]) const
+  {
+    const Piece p(f.piece);
+    const std::uint32_t row = std::uint32_t(p.row), span = std::uint32_t(1) << p.m;
+    if(p.m >= 2) {
+      halves[0] = make_fragment(f.face, piece_code(p.kind, p.k, 0, row, p.m - 1));
+      halves[1] = make_fragment(f.face, piece_code(p.kind, p.k, 0, row + span / 2, p.m - 1));
+      return 2;
+    }
+    halves[0] = make_fragment(f.face, piece_code(p.kind, p.k, 0, row));
+    halves[1] = make_fragment(f.face, piece_code(p.kind, p.k, 1, row));
+    halves[2] = make_fragment(f.face, piece_code(p.kind, p.k, 0, row + 1));
+    if(Block(faces_[f.face], f.piece).tip) return 3;
+    halves[3] = make_fragment(f.face, piece_code(p.kind, p.k, 1, row + 1));
+    return 4;
+  }
+
+  // refine() for a block: its halves that no ball of `near` covers (the union test is not tried on
+  // them: see the class description)
+  template <class PointRange, class OutputIterator>
+  bool refine_block(const Fragment& f, const PointRange& near, double radius, OutputIterator children) const
+  {
+    const Face& face = faces_[f.face];
+    const Block b(face, f.piece);
+    Point p[6];
+    for(int j = 0; j < 6; ++j) p[j] = b.point(face, j);
+    Point centres[64];
+    const std::size_t n = load_centres(near, face.v0, centres);
+    std::uint64_t in[6] = {0, 0, 0, 0, 0, 0};
+    cover_bits(p, 0, 6, centres, n, covering_squared_radius(radius, local_error(face, radius)), in);
+    if(in[0] & in[1] & in[2] & in[3]) return true;
+    // the points of each half: (p_a, q_a, q_c, p_c) and (p_c, q_c, q_b, p_b), or the rows' triangles
+    // as frame() makes them, (p_j, q_j, p_j+1) and (q_j, q_j+1, p_j+1)
+    static constexpr int blocks[2][4] = {{0, 1, 5, 4}, {4, 5, 2, 3}};
+    static constexpr int rows[4][4] = {{0, 1, 4, 4}, {1, 5, 4, 4}, {4, 5, 3, 3}, {5, 2, 3, 3}};
+    Fragment halves[4];
+    const int count = block_halves(f, halves);
+    for(int c = 0; c < count; ++c) {
+      const int* x = count == 2 ? blocks[c] : rows[c];
+      if(!(in[x[0]] & in[x[1]] & in[x[2]] & in[x[3]])) *children++ = halves[c];
+    }
+    return false;
+  }
   static int floor_log2(std::uint32_t n) // n >= 1
   {
 #if defined(__GNUC__) || defined(__clang__)
@@ -689,6 +835,10 @@ private:
       side = p.kind == 2 ? t : 1 - t;
     }
     const double h = internal::power_of_half(std::size_t(rows_log2(f, p.kind, p.k)));
+    if(p.m != 0) { // a block: rows [a, b), where the needle is 1 - t wide
+      const double a = 1 - p.row * h, b = 1 - (p.row + double(std::uint32_t(1) << p.m)) * h;
+      return side * (a * a - b * b);
+    }
     return side * h * (1 - (p.row + p.half) * h);
   }
 

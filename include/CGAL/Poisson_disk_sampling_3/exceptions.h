@@ -29,10 +29,10 @@ public:
 /// `maximum_number_of_points` (default 100 million): the estimate area / (pi r^2) of a radius
 /// request, or the target of a `number_of_points` request, is checked first, and the actual count
 /// while sampling (thin or scattered surfaces can exceed the estimate). Also thrown, before any piece
-/// is stored, when long thin triangles would be cut into more pieces beyond one per face than four
-/// times that bound plus six per face, the memory those take (`Triangle_fragment_traits_3`); and
-/// while sampling, if 2^32 or more fragments of about the same area would be active at once (only
-/// with the bound raised far above its default).
+/// is stored, when a model's roots for the distance (the optional `initial_fragments(out, d)` of
+/// `SurfaceFragmentTraits_3`) would outnumber its faces by more than four times that bound plus six
+/// per face, the memory those take; and while sampling, if 2^32 or more fragments of about the same
+/// area would be active at once (only with the bound raised far above its default).
 class Point_limit_exceeded : public std::length_error
 {
 public:

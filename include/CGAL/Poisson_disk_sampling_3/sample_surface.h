@@ -256,9 +256,9 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///   \cgalParamNBegin{maximum_number_of_points}
 ///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) a radius request whose area / (pi r^2)
 ///       exceeds it, or a `number_of_points` above it, before any large allocation; the number of samples
-///       accepted never exceeds it either. Pieces that a model cuts its long faces into for the distance
-///       (`Triangle_fragment_traits_3`) may outnumber the faces by at most four times the bound plus six
-///       per face.}
+///       accepted never exceeds it either. The roots a model writes for the distance (its optional
+///       `initial_fragments(out, d)`) may outnumber its faces by at most four times the bound plus six
+///       per face (`Triangle_fragment_traits_3` writes at most two per face).}
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{100 million}
 ///   \cgalParamNEnd

@@ -29,8 +29,9 @@ namespace internal {
 
 typedef std::array<double, 3> Point_d;
 
-/// The refusal of the pieces of long thin faces (`Point_limit_exceeded`, so that callers need not know
-/// it): the count search passes it on as it is, not as an overshoot of its target.
+/// The refusal of a model's roots for the distance, where they outnumber its whole roots far
+/// (`Point_limit_exceeded`, so that callers need not know it): the count search passes it on as it
+/// is, not as an overshoot of its target.
 class Pieces_limit_exceeded : public Point_limit_exceeded
 {
 public:
@@ -149,21 +150,21 @@ public:
       if(a > max_area) max_area = a;
     };
     root_fragments(traits_, d_, Calling_output(&measure));
-    // The pieces of long thin faces: each takes a pool entry of 32 bytes and its share of a chunk, and
-    // four per point of the bound and six per face leave room in the memory budget, 200 bytes a sample
-    // and 300 a face. With fewer roots than four per point of the bound there is nothing to refuse, and
-    // the faces need not be counted.
+    // The roots a model writes for the distance beyond those it writes without it (pieces of its
+    // faces; the triangle model writes at most two per face, see its "Long thin triangles"): each takes
+    // a pool entry and its share of a chunk, and four per point of the bound and six per face leave
+    // room in the memory budget, 200 bytes a sample and 300 a face. With fewer roots than four per
+    // point of the bound there is nothing to refuse, and the faces need not be counted.
     if(double(roots) > 4 * double(max_points_)) {
       std::size_t faces = 0;
       traits_.initial_fragments(Counting_output{&faces}); // the roots without the distance: no pieces
       const std::size_t pieces = roots > faces ? roots - faces : 0;
       if(double(pieces) > 4 * double(max_points_) + 6 * double(faces))
         throw Pieces_limit_exceeded("at the minimum distance " + number_text(d_) +
-                                    ", long thin faces would be cut into " + std::to_string(pieces) +
-                                    " more pieces than they are faces, more than four times "
-                                    "maximum_number_of_points (" +
+                                    ", the surface's pieces would outnumber its faces by " +
+                                    std::to_string(pieces) + ", more than four times maximum_number_of_points (" +
                                     std::to_string(max_points_) + ") plus six per face (" + std::to_string(faces) +
-                                    "); use a larger distance, raise the bound, or split the long edges");
+                                    "); use a larger distance or raise the bound");
     }
     check_surface_area(total_area, "sample");
     if(check_expected_count_) check_expected_count(total_area, d_, max_points_);
