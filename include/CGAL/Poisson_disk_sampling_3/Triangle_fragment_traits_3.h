@@ -761,7 +761,7 @@ private:
     halves[0] = make_fragment(f.face, piece_code(p.kind, p.k, 0, row));
     halves[1] = make_fragment(f.face, piece_code(p.kind, p.k, 1, row));
     halves[2] = make_fragment(f.face, piece_code(p.kind, p.k, 0, row + 1));
-    if(Block(faces_[f.face], f.piece).tip) return 3;
+    if(row + span == std::uint32_t(1) << rows_log2(faces_[f.face], p.kind, p.k)) return 3; // the needle's end
     halves[3] = make_fragment(f.face, piece_code(p.kind, p.k, 1, row + 1));
     return 4;
   }
