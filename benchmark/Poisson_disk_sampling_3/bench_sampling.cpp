@@ -23,6 +23,7 @@
 
 #include <benchmark/benchmark.h>
 #include <boost/iterator/function_output_iterator.hpp>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -545,6 +546,33 @@ void long_faces_case(benchmark::State& state, const std::string& name)
   state.counters["memory_budget_use_whole_faces"] = peak[1] / budget;
 }
 
+// concurrency(CGAL::Parallel_tag()) against the sequential run, alternating (see above), on TBB's
+// default number of threads: args: n. The two give the same points, which is checked; the parallel
+// run's output is validated.
+void threads_case(benchmark::State& state, const std::string& name)
+{
+  const Mesh& m = mesh(name);
+  const double d = distance_for(PMP::area(m), double(state.range(0)));
+  std::vector<Point> points[2];
+  const std::array<double, 2> best = fastest_alternating(state, [&](std::size_t v) {
+    points[v].clear();
+    if(v == 0) PDS::sample_triangle_mesh(m, std::back_inserter(points[v]), PDS::parameters::minimum_distance(d));
+    else
+      PDS::sample_triangle_mesh(m, std::back_inserter(points[v]),
+                                PDS::parameters::minimum_distance(d).concurrency(CGAL::Parallel_tag()));
+  });
+  if(points[0] != points[1]) {
+    state.SkipWithError("the parallel run gave other points than the sequential one");
+    return;
+  }
+  if(!validate(state, m, points[1], d)) return;
+  state.counters["points"] = double(points[1].size());
+  state.counters["threads"] = double(tbb::this_task_arena::max_concurrency());
+  state.counters["sequential_seconds"] = best[0];
+  state.counters["parallel_seconds"] = best[1];
+  state.counters["speedup"] = best[0] / best[1];
+}
+
 void register_cases()
 {
   for(const char* name : {"lion.off", "armadillo.off", "armadillo_loop3"})
@@ -577,6 +605,9 @@ void register_cases()
                                  [name](benchmark::State& s) { long_faces_case(s, name); })
         ->Arg(std::string(name).rfind("cylinder", 0) == 0 ? 2000 : 10000)
         ->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  for(int n : {100000, 1000000})
+    benchmark::RegisterBenchmark("threads/lion.off", [](benchmark::State& s) { threads_case(s, "lion.off"); })
+        ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(const char* name : {"lion.off", "armadillo_loop3"})
     benchmark::RegisterBenchmark((std::string("linearity/") + name).c_str(),
                                  [name](benchmark::State& s) { linearity_case(s, name); })

@@ -72,6 +72,33 @@ TEST(Random, SameSeedSameStreamAndRanges)
   EXPECT_EQ(Random(0).next(), Random(0).next());
 }
 
+// A dart's own generator (Stream): the same seed gives the same values, in [0, 1); the first values of
+// streams seeded by successive draws of Random, as the engine seeds its darts, are uniform (ten bins,
+// 5 standard deviations), and so are the second ones.
+TEST(Random, DartStreamsAreReproducibleAndUniform)
+{
+  using CGAL::Poisson_disk_sampling_3::internal::Stream;
+  Stream a(17), b(17), c(18);
+  EXPECT_EQ(a.uniform(), b.uniform());
+  EXPECT_NE(a.uniform(), c.uniform());
+  Random seeds(3);
+  const int n = 100000;
+  std::array<int, 10> first{}, second{};
+  for(int i = 0; i < n; ++i) {
+    Stream s(seeds.next());
+    const double u = s.uniform(), v = s.uniform();
+    ASSERT_TRUE(u >= 0 && u < 1 && v >= 0 && v < 1);
+    ++first[std::size_t(10 * u)];
+    ++second[std::size_t(10 * v)];
+    EXPECT_LT(s.uniform_index(7), 7u);
+  }
+  const double sigma = std::sqrt(n * 0.1 * 0.9);
+  for(int k = 0; k < 10; ++k) {
+    EXPECT_NEAR(first[std::size_t(k)], n / 10, 5 * sigma) << k;
+    EXPECT_NEAR(second[std::size_t(k)], n / 10, 5 * sigma) << k;
+  }
+}
+
 // One complete draw: the pool's rejection step repeated until it accepts; items are indices in `areas`.
 template <class Pool>
 typename Pool::Handle draw_one(Pool& pool, Random& rng, const std::vector<double>& areas)
@@ -304,6 +331,23 @@ TEST(Engine, SamplesAUserModel)
     EXPECT_FALSE(certified_maximal(traits, std::vector<std::array<double, 3>>(points.begin() + 1, points.end()), 0.02) &&
                  certified_maximal(traits, std::vector<std::array<double, 3>>(points.begin(), points.end() - 1), 0.02))
         << "removing a sample should usually open a gap";
+  }
+}
+
+// A model without refine(), whose random_sample() refuses half of its darts: on TBB's threads
+// (concurrency(CGAL::Parallel_tag())) the engine gives the sequential run's samples.
+TEST(Engine, ThreadsGiveTheSamePointsOnAUserModel)
+{
+  for(bool refuse_half : {false, true}) {
+    const Square_traits traits(refuse_half);
+    std::vector<Square_traits::Sample> sequential, parallel;
+    PDS::sample_surface(traits, std::back_inserter(sequential),
+                        PDS::parameters::minimum_distance(0.005).random_seed(4));
+    PDS::sample_surface(traits, std::back_inserter(parallel),
+                        PDS::parameters::minimum_distance(0.005).random_seed(4).concurrency(CGAL::Parallel_tag()));
+    ASSERT_EQ(parallel.size(), sequential.size()) << refuse_half;
+    EXPECT_GT(sequential.size(), 20000u);
+    for(std::size_t i = 0; i < sequential.size(); ++i) ASSERT_EQ(parallel[i].point, sequential[i].point) << i;
   }
 }
 

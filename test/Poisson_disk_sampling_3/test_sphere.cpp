@@ -12,6 +12,7 @@
 
 #include <boost/iterator/function_output_iterator.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,23 @@ INSTANTIATE_TEST_SUITE_P(Spheres, SphereSampling,
                                            // far from the origin (see CoverageDoesNotDependOnWhereTheSphereIs):
                                            // with the old margin, 5 of 6 seeds were not proven maximal
                                            Case{{1e6 + 0.1, 7e5, -1e6}, 1, 0.021, 1}));
+
+// On TBB's threads (concurrency(CGAL::Parallel_tag())), the sphere gives the sequential run's points
+TEST(SphereSampling, ThreadsGiveTheSamePoints)
+{
+  const K::Sphere_3 sphere(Point(1, 2, 3), 4);
+  std::vector<Point> sequential;
+  PDS::sample_sphere(sphere, std::back_inserter(sequential), PDS::parameters::minimum_distance(0.03).random_seed(8));
+  for(int threads : {1, 3}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    std::vector<Point> parallel;
+    PDS::sample_sphere(sphere, std::back_inserter(parallel),
+                       PDS::parameters::minimum_distance(0.03).random_seed(8).concurrency(CGAL::Parallel_tag()));
+    EXPECT_EQ(parallel, sequential) << threads << " threads";
+  }
+  // enough points that most batches have the 64 darts or more that are split among threads
+  EXPECT_GT(sequential.size(), 30000u);
+}
 
 TEST(SphereSampling, CountMatchesTheAreaAndIsReproducible)
 {

@@ -11,6 +11,8 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 
+#include <tbb/global_control.h>
+
 #include <cmath>
 #include <tuple>
 
@@ -130,6 +132,31 @@ TEST(MeshSampling, SameSeedSamePointsWhateverRanBefore)
   EXPECT_EQ(a, b);
   EXPECT_EQ(a, c);
   EXPECT_NE(a, other);
+}
+
+// With concurrency(CGAL::Parallel_tag()), a batch's darts are thrown and their fragments refined on
+// TBB's threads, each dart with its own generator: the points are the sequential run's, in the same
+// order, whatever the number of threads, for a radius and for a count.
+TEST(MeshSampling, ThreadsGiveTheSamePoints)
+{
+  const Mesh m = load_mesh("lion.off");
+  const double d = distance_for(PMP::area(m), 20000);
+  std::vector<Point> sequential, counted;
+  PDS::sample_triangle_mesh(m, std::back_inserter(sequential), PDS::parameters::minimum_distance(d).random_seed(5));
+  PDS::sample_triangle_mesh(m, std::back_inserter(counted), PDS::parameters::number_of_points(5000).random_seed(5));
+  for(int threads : {1, 2, 4}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    std::vector<Point> parallel, parallel_count;
+    PDS::sample_triangle_mesh(
+        m, std::back_inserter(parallel),
+        PDS::parameters::minimum_distance(d).random_seed(5).concurrency(CGAL::Parallel_tag()));
+    EXPECT_EQ(parallel, sequential) << threads << " threads";
+    PDS::sample_triangle_mesh(
+        m, std::back_inserter(parallel_count),
+        PDS::parameters::concurrency(CGAL::Parallel_tag()).number_of_points(5000).random_seed(5));
+    EXPECT_EQ(parallel_count, counted) << threads << " threads";
+  }
+  expect_maximal_poisson_disk_set(m, sequential, d);
 }
 
 // Scaled by a power of two, a mesh gives the same points, scaled: no step of the triangle model, its

@@ -16,6 +16,7 @@ enum minimum_distance_t { minimum_distance };
 enum number_of_points_t { number_of_points };
 enum maximum_number_of_points_t { maximum_number_of_points };
 enum statistics_t { statistics };
+enum concurrency_t { concurrency };
 } // namespace internal_np
 /// \endcond
 
@@ -52,6 +53,7 @@ public:
   CGAL_PDS_CHAIN(number_of_points, internal_np::number_of_points_t)
   CGAL_PDS_CHAIN(maximum_number_of_points, internal_np::maximum_number_of_points_t)
   CGAL_PDS_CHAIN(statistics, internal_np::statistics_t)
+  CGAL_PDS_CHAIN(concurrency, internal_np::concurrency_t)
   CGAL_PDS_CHAIN(random_seed, CGAL::internal_np::random_seed_t)
   CGAL_PDS_CHAIN(vertex_point_map, CGAL::internal_np::vertex_point_t)
   CGAL_PDS_CHAIN(geom_traits, CGAL::internal_np::geom_traits_t)
@@ -71,6 +73,7 @@ CGAL_PDS_START(minimum_distance, internal_np::minimum_distance_t)
 CGAL_PDS_START(number_of_points, internal_np::number_of_points_t)
 CGAL_PDS_START(maximum_number_of_points, internal_np::maximum_number_of_points_t)
 CGAL_PDS_START(statistics, internal_np::statistics_t)
+CGAL_PDS_START(concurrency, internal_np::concurrency_t)
 CGAL_PDS_START(random_seed, CGAL::internal_np::random_seed_t)
 CGAL_PDS_START(vertex_point_map, CGAL::internal_np::vertex_point_t)
 CGAL_PDS_START(geom_traits, CGAL::internal_np::geom_traits_t)

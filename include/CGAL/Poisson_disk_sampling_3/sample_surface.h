@@ -9,6 +9,7 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/Dart_throwing_engine.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/tags.h>
 
 #include <array>
 #include <cmath>
@@ -116,15 +117,34 @@ std::size_t read_max_points(const NamedParameters& np)
   return to_size(m);
 }
 
+/// whether the `concurrency` parameter asks for TBB's threads: `CGAL::Parallel_tag` (a compilation
+/// error without TBB), `CGAL::Parallel_if_available_tag` (TBB's threads where CGAL is linked with it),
+/// `CGAL::Sequential_tag` (the default)
+template <class NamedParameters>
+constexpr bool read_parallel()
+{
+  typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::concurrency_t, NamedParameters,
+                                                              CGAL::Sequential_tag>::type Tag;
+  static_assert(std::is_same<Tag, CGAL::Sequential_tag>::value || std::is_same<Tag, CGAL::Parallel_tag>::value,
+                "concurrency takes CGAL::Sequential_tag, CGAL::Parallel_tag or CGAL::Parallel_if_available_tag");
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_same<Tag, CGAL::Parallel_tag>::value,
+                "concurrency(CGAL::Parallel_tag()) needs TBB: link CGAL::TBB_support, or pass "
+                "CGAL::Parallel_if_available_tag()");
+#endif
+  return std::is_same<Tag, CGAL::Parallel_tag>::value;
+}
+
 /// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted. With
 /// `check_expected_count` false, the run does not refuse the distance up front (see
 /// `Dart_throwing_engine::set_expected_count_check()`).
 template <class Traits, class Emit>
-void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points,
+void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points, bool parallel,
                 Sampling_statistics& stats, Emit&& emit, bool check_expected_count = true)
 {
   Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
   engine.set_expected_count_check(check_expected_count);
+  engine.set_parallel(parallel);
   const Engine_statistics e = engine.run(emit);
   stats.minimum_distance = d;
   ++stats.number_of_runs;
@@ -141,7 +161,7 @@ void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// leave it. One to three full runs, more for small targets.
 template <class Traits>
 std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
-                                                   std::size_t max_points, Sampling_statistics& stats)
+                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats)
 {
   if(n > max_points)
     throw Point_limit_exceeded("number_of_points (" + std::to_string(n) +
@@ -161,8 +181,9 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   for(int run = 0; run < 24; ++run) {
     std::vector<typename Traits::Sample> samples;
     try {
-      run_engine(traits, d, seed, max_points, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
-                 false);
+      run_engine(
+          traits, d, seed, max_points, parallel, stats,
+          [&](const typename Traits::Sample& s) { samples.push_back(s); }, false);
     } catch(const Pieces_limit_exceeded&) {
       throw;
     } catch(const Point_limit_exceeded&) {
@@ -211,15 +232,16 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
   const Size_request size = read_size(np);
   const std::uint64_t seed = read_seed(np);
   const std::size_t max_points = read_max_points(np);
+  constexpr bool parallel = read_parallel<NamedParameters>();
   Sampling_statistics local;
   Sampling_statistics& stats = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
   stats = Sampling_statistics();
   if(size.number_of_points > 0) {
-    for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, stats)) emit(s);
+    for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, parallel, stats)) emit(s);
     return;
   }
-  run_engine(traits, size.minimum_distance, seed, max_points, stats, emit);
+  run_engine(traits, size.minimum_distance, seed, max_points, parallel, stats, emit);
 }
 
 } // namespace internal
@@ -266,6 +288,15 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///     \cgalParamDescription{receives what the call did, among which the minimum distance it used}
 ///     \cgalParamType{`std::reference_wrapper<Sampling_statistics>` (pass `std::ref(s)`)}
 ///     \cgalParamDefault{not filled}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{concurrency}
+///     \cgalParamDescription{`CGAL::Parallel_tag()` throws each batch of darts and refines their fragments
+///       on TBB's threads (the program links `CGAL::TBB_support`; without TBB, a compilation error);
+///       `CGAL::Parallel_if_available_tag()` does so where CGAL is linked with TBB. The samples are the
+///       sequential run's, in the same order, whatever the number of threads: each dart draws from a
+///       generator of its own, and the darts are judged and their children stored in order.}
+///     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`}
+///     \cgalParamDefault{`CGAL::Sequential_tag()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed}
 ///     \cgalParamDescription{the seed: the same seed and input give the same samples}

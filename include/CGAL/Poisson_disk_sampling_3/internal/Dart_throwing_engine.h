@@ -11,6 +11,12 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/Random.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -132,6 +138,12 @@ public:
   /// accepted holds either way.
   void set_expected_count_check(bool check) { check_expected_count_ = check; }
 
+  /// Whether `run()` throws each batch's darts and refines their fragments on TBB's threads (only where
+  /// CGAL_LINKED_WITH_TBB is defined; by default, no). The samples are the same either way: each dart
+  /// draws from a generator of its own, seeded in order from the run's, and the darts are judged and
+  /// their children pushed in order on this thread (design.md, "Threads").
+  void set_parallel(bool parallel) { parallel_ = parallel; }
+
   /// Throws darts until the surface is covered; calls `output(sample)` for each accepted sample.
   template <class SampleOutput>
   Engine_statistics run(SampleOutput&& output)
@@ -191,7 +203,7 @@ public:
     // its fragment F), and within 2D (they may cover F together); kept from batch to batch, so that
     // their storage is reused
     std::vector<std::vector<Point_d>> near(max_batch), around(max_batch);
-    std::vector<Fragment> children;
+    std::vector<std::vector<Fragment>> children(max_batch);
 
     while(!pool.empty()) {
       if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
@@ -208,60 +220,74 @@ public:
       for(Dart& d : darts) {
         d.handle = pool.draw(rng);
         d.u = rng.uniform();
+        d.stream = rng.next();
         pool.prefetch(d.handle);
       }
       clock.lap(stats.stage_seconds[draw_stage]);
-      for(Dart& d : darts) {
-        d.item = pool.item(d.handle);
-        prefetch_fragment(d.item.fragment);
-      }
-      clock.lap(stats.stage_seconds[fragment_stage]);
-      // the batch's fragments and faces overflow the first-level cache too: asked for again a few
-      // darts ahead (the compaction below writes only to places already read)
-      std::size_t m = 0;
-      for(std::size_t k = 0; k < darts.size(); ++k) {
-        if(k + lookahead < darts.size()) prefetch_fragment(darts[k + lookahead].item.fragment);
-        Dart& d = darts[k];
-        // the pool's rejection step: a refused draw is no dart
-        if(!pool.accepts(d.handle, traits_.area(d.item.fragment), d.u)) continue;
-        d.sample = traits_.random_sample(d.item.fragment, rng);
-        if(!d.sample) continue; // a rejection step in the model refused the dart
-        d.point = traits_.point(*d.sample);
-        d.cell = buckets.cell(d.point);
-        buckets.prefetch_slot(d.cell);
-        darts[m++] = d;
-      }
-      darts.resize(m);
-      stats.darts += m;
-      clock.lap(stats.stage_seconds[sample_stage]);
-      for(Dart& d : darts) {
-        d.bucket = buckets.bucket(d.cell);
-        Neighbor_buckets::prefetch_header(d.bucket);
-      }
-      clock.lap(stats.stage_seconds[bucket_stage]);
-      for(const Dart& d : darts) Neighbor_buckets::prefetch_points(d.bucket);
-      clock.lap(stats.stage_seconds[points_stage]);
-      // one scan of each bucket finds both whether the dart is free and the samples that may cover
-      // its fragment, which the refinement below needs. The batch's buckets (8 cache lines each on
-      // average) do not all fit in the first-level cache, where the stage above asked for them: the
-      // scan asks again for the bucket a few darts ahead, which then comes from the second level.
-      for(std::size_t k = 0; k < darts.size(); ++k) {
-        Dart& d = darts[k];
-        if(k + lookahead < darts.size()) Neighbor_buckets::prefetch_points(darts[k + lookahead].bucket);
-        near[k].clear();
-        around[k].clear();
-        if(d.bucket) gather_near(*d.bucket, d.point, near[k], around[k]);
-        d.free = true;
-        for(std::size_t i = 0; i < near[k].size() && d.free; ++i)
-          d.free = compare_distance_exact(d.point.data(), near[k][i].data(), d_) != CGAL::SMALLER;
-      }
-
-      clock.lap(stats.stage_seconds[scan_stage]);
+      // Each dart draws its point from a generator of its own, seeded above: what it draws does not
+      // depend on which thread throws it, or in which order.
+      auto throw_darts = [&](std::size_t first, std::size_t last, std::vector<std::uint32_t>& hits, bool timed) {
+        auto lap = [&](Engine_stage stage) {
+          if(timed) clock.lap(stats.stage_seconds[stage]);
+        };
+        for(std::size_t k = first; k < last; ++k) {
+          darts[k].item = pool.item(darts[k].handle);
+          prefetch_fragment(darts[k].item.fragment);
+        }
+        lap(fragment_stage);
+        // the batch's fragments and faces overflow the first-level cache too: asked for again a few
+        // darts ahead. The darts thrown are moved to the front of the range, in order (the compaction
+        // writes only to places already read); the others are marked not thrown.
+        std::size_t thrown = first;
+        for(std::size_t k = first; k < last; ++k) {
+          if(k + lookahead < last) prefetch_fragment(darts[k + lookahead].item.fragment);
+          Dart& d = darts[k];
+          // the pool's rejection step: a refused draw is no dart; nor is a dart that a rejection step in
+          // the model refuses
+          if(!pool.accepts(d.handle, traits_.area(d.item.fragment), d.u)) continue;
+          Stream stream(d.stream);
+          d.sample = traits_.random_sample(d.item.fragment, stream);
+          if(!d.sample) continue;
+          d.point = traits_.point(*d.sample);
+          d.cell = buckets.cell(d.point);
+          buckets.prefetch_slot(d.cell);
+          d.thrown = true;
+          darts[thrown++] = d;
+        }
+        for(std::size_t k = thrown; k < last; ++k) darts[k].thrown = false;
+        last = thrown;
+        lap(sample_stage);
+        for(std::size_t k = first; k < last; ++k) {
+          Dart& d = darts[k];
+          d.bucket = buckets.bucket(d.cell);
+          Neighbor_buckets::prefetch_header(d.bucket);
+        }
+        lap(bucket_stage);
+        for(std::size_t k = first; k < last; ++k) Neighbor_buckets::prefetch_points(darts[k].bucket);
+        lap(points_stage);
+        // one scan of each bucket finds both whether the dart is free and the samples that may cover
+        // its fragment, which the refinement below needs. The batch's buckets (8 cache lines each on
+        // average) do not all fit in the first-level cache, where the stage above asked for them: the
+        // scan asks again for the bucket a few darts ahead, which then comes from the second level.
+        for(std::size_t k = first; k < last; ++k) {
+          Dart& d = darts[k];
+          if(k + lookahead < last) Neighbor_buckets::prefetch_points(darts[k + lookahead].bucket);
+          near[k].clear();
+          around[k].clear();
+          if(d.bucket) gather_near(*d.bucket, d.point, near[k], around[k], hits);
+          d.free = true;
+          for(std::size_t i = 0; i < near[k].size() && d.free; ++i)
+            d.free = compare_distance_exact(d.point.data(), near[k][i].data(), d_) != CGAL::SMALLER;
+        }
+        lap(scan_stage);
+      };
+      for_each_dart(darts.size(), throw_darts);
+      for(const Dart& d : darts) stats.darts += d.thrown;
       accepted.clear();
       for(Dart& d : darts) {
         d.accepted = false;
         d.batch_coverer = none;
-        if(!d.free) continue;
+        if(!d.thrown || !d.free) continue;
         d.batch_coverer = first_conflict(accepted, d.point);
         if(d.batch_coverer != none) continue;
         if(buckets.size() + accepted.size() >= max_points_)
@@ -280,31 +306,53 @@ public:
 
       // Each fragment that got a dart leaves the pool; what of it is not covered comes back as
       // children. A fragment drawn twice is handled once.
-      for(std::size_t k = 0; k < darts.size(); ++k) {
-        const Dart& d = darts[k];
-        if(!pool.take(d.handle)) continue;
+      auto take = [&](std::size_t k) {
+        Dart& d = darts[k];
+        d.taken = d.thrown && pool.take(d.handle);
         // The samples that may cover F: the ones near the dart before the batch, and the dart's own
         // sample or the sample of the batch that refused it. (The batch's other samples are rarely
         // near: leaving them out costs 0.7% more darts, and scanning them for every dart more time.)
-        if(d.batch_coverer != none) {
+        if(d.taken && d.batch_coverer != none) {
           near[k].push_back(accepted[d.batch_coverer]);
           around[k].push_back(accepted[d.batch_coverer]);
         }
-        // F itself gets the single-ball test only: it is rarely covered by the union when no single
-        // ball covers it, and if it is, its children are, and the union test on them drops them (at
-        // the depth floor, where it has no children, it gets the union test too)
-        const int depth = depth_of(d.item);
-        children.clear();
-        if(refine(d.item.fragment, depth, near[k], around[k], children)) {
+      };
+      // F itself gets the single-ball test only: it is rarely covered by the union when no single
+      // ball covers it, and if it is, its children are, and the union test on them drops them (at
+      // the depth floor, where it has no children, it gets the union test too)
+      auto refine_dart = [&](std::size_t k, std::vector<Fragment>& kids) {
+        Dart& d = darts[k];
+        kids.clear();
+        if(d.taken) d.covered = refine(d.item.fragment, depth_of(d.item), near[k], around[k], kids);
+      };
+      auto push_children = [&](std::size_t k, const std::vector<Fragment>& kids) {
+        const Dart& d = darts[k];
+        if(!d.taken) return;
+        if(d.covered) {
           stats.darts_on_covered += !d.accepted;
-          continue;
+          return;
         }
+        const int depth = depth_of(d.item);
         if(depth >= max_depth_) {
           ++stats.dropped_at_max_depth;
-          continue;
+          return;
         }
-        for(const Fragment& c : children) pool.push(make_item(c, depth + 1), traits_.area(c));
-        stats.darts_on_covered += !d.accepted && children.empty();
+        for(const Fragment& c : kids) pool.push(make_item(c, depth + 1), traits_.area(c));
+        stats.darts_on_covered += !d.accepted && kids.empty();
+      };
+      if(in_parallel(darts.size())) {
+        // the same calls in the same order, but for refine(), which reads only the dart's own data
+        for(std::size_t k = 0; k < darts.size(); ++k) take(k);
+        for_each_dart(darts.size(), [&](std::size_t first, std::size_t last, std::vector<std::uint32_t>&, bool) {
+          for(std::size_t k = first; k < last; ++k) refine_dart(k, children[k]);
+        });
+        for(std::size_t k = 0; k < darts.size(); ++k) push_children(k, children[k]);
+      } else {
+        for(std::size_t k = 0; k < darts.size(); ++k) {
+          take(k);
+          refine_dart(k, children[0]);
+          push_children(k, children[0]);
+        }
       }
       clock.lap(stats.stage_seconds[refine_stage]);
       pool.end_batch();
@@ -347,6 +395,8 @@ private:
     Dart() {} // every stage sets what the next one reads: no zeroing on each batch's resize()
     typename Pool::Handle handle;
     double u;                       // for the pool's rejection step
+    std::uint64_t stream;           // the seed of the dart's own generator
+    bool thrown;                    // passed the rejection steps: a dart
     Item item;
     std::optional<Sample> sample;
     Point_d point;
@@ -355,6 +405,8 @@ private:
     bool free;                      // at distance >= D from the samples before the batch
     std::size_t batch_coverer;      // in `accepted`: its own sample or the first within D, else none
     bool accepted;
+    bool taken;                     // the first dart of the batch on its fragment
+    bool covered;                   // refine() found its fragment covered
   };
 
   // Darts per batch, at most. Large enough that a batch's cache misses overlap, small enough that what
@@ -374,6 +426,35 @@ private:
 
   static constexpr std::size_t none = std::size_t(-1);
 
+  // Calls body(first, last, scratch, timed) on ranges that cover [0, n): the whole of it on this
+  // thread, with `timed` true (the stage clock may be read), or, in parallel mode, ranges of at most
+  // `grain` darts on TBB's threads, each thread with its own scratch, `timed` false.
+  template <class Body>
+  void for_each_dart(std::size_t n, Body&& body)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(in_parallel(n)) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
+        body(r.begin(), r.end(), scratch_.local(), false);
+      });
+      return;
+    }
+#endif
+    body(0, n, hits_, true);
+  }
+  static constexpr std::size_t grain = 32;
+
+  // whether for_each_dart(n, ...) runs on several threads
+  bool in_parallel(std::size_t n) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    return parallel_ && n >= 2 * grain;
+#else
+    (void)n;
+    return false;
+#endif
+  }
+
   // the first point of `points` at distance < D from p, decided exactly; `none` if p is free
   std::size_t first_conflict(const std::vector<Point_d>& points, const Point_d& p) const
   {
@@ -392,12 +473,12 @@ private:
   // for the branch predictor) and writes only the positions of the samples it finds; they are
   // copied after.
   void gather_near(const std::vector<Point_d>& bucket, const Point_d& p, std::vector<Point_d>& near,
-                   std::vector<Point_d>& around)
+                   std::vector<Point_d>& around, std::vector<std::uint32_t>& hits) const
   {
     const std::size_t size = bucket.size();
-    if(hits_.size() < 2 * size) hits_.resize(2 * size);
-    std::uint32_t* hit_near = hits_.data();
-    std::uint32_t* hit_around = hits_.data() + size;
+    if(hits.size() < 2 * size) hits.resize(2 * size);
+    std::uint32_t* hit_near = hits.data();
+    std::uint32_t* hit_around = hits.data() + size;
     const double d2_near = d_ * d_ * (1 + 1e-9), d2_around = 4 * d2_near;
     std::size_t hn = 0, ha = 0;
     for(std::size_t i = 0; i < size; ++i) {
@@ -449,6 +530,10 @@ private:
 
   const Traits& traits_;
   std::vector<std::uint32_t> hits_; // scratch of gather_near()
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<std::vector<std::uint32_t>> scratch_;
+#endif
+  bool parallel_ = false;
   double d_;
   std::uint64_t seed_;
   std::size_t max_points_;

@@ -73,6 +73,33 @@ private:
   std::uint64_t s_[4];
 };
 
+/// A generator for a few draws (a dart's), seeded by one draw of `Random`: splitmix64, whose outputs
+/// are the successive states of a Weyl sequence (step 0x9E3779B97F4A7C15) through a mixing function.
+/// Streams of different seeds share no state unless their seeds are within a few steps of each other,
+/// a chance of about 2^-60 for two random seeds.
+class Stream
+{
+public:
+  explicit Stream(std::uint64_t seed) : state_(seed) {}
+
+  std::uint64_t next()
+  {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+
+  /// uniform double in [0, 1), 53 random bits
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+
+  /// uniform integer in [0, n), n > 0, as `Random::uniform_index()`
+  std::uint64_t uniform_index(std::uint64_t n) { return Random::high_half_of_product(next(), n); }
+
+private:
+  std::uint64_t state_;
+};
+
 } // namespace internal
 } // namespace Poisson_disk_sampling_3
 } // namespace CGAL
