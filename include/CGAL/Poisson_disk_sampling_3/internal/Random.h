@@ -10,6 +10,30 @@ namespace CGAL {
 namespace Poisson_disk_sampling_3 {
 namespace internal {
 
+/// splitmix64: the successive states of a Weyl sequence (step 0x9E3779B97F4A7C15) through a mixing
+/// function. It seeds `Random`, and a dart draws its point from one seeded by a draw of `Random`.
+/// Streams of different seeds share no state unless their seeds are within a few steps of each other,
+/// a chance of about 2^-60 for two random seeds.
+class Stream
+{
+public:
+  explicit Stream(std::uint64_t seed) : state_(seed) {}
+
+  std::uint64_t next()
+  {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+
+  /// uniform double in [0, 1), 53 random bits
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+
+private:
+  std::uint64_t state_;
+};
+
 // xoshiro256** seeded with splitmix64. We do not use <random> distributions: their output differs
 // between standard libraries, and the package promises the same points for the same seed everywhere.
 class Random
@@ -17,14 +41,8 @@ class Random
 public:
   explicit Random(std::uint64_t seed)
   {
-    std::uint64_t x = seed;
-    for(std::uint64_t& si : s_) {
-      x += 0x9E3779B97F4A7C15ull;
-      std::uint64_t z = x;
-      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-      si = z ^ (z >> 31);
-    }
+    Stream seeds(seed);
+    for(std::uint64_t& si : s_) si = seeds.next();
   }
 
   std::uint64_t next()
@@ -71,33 +89,6 @@ public:
 private:
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
-};
-
-/// A generator for a few draws (a dart's), seeded by one draw of `Random`: splitmix64, whose outputs
-/// are the successive states of a Weyl sequence (step 0x9E3779B97F4A7C15) through a mixing function.
-/// Streams of different seeds share no state unless their seeds are within a few steps of each other,
-/// a chance of about 2^-60 for two random seeds.
-class Stream
-{
-public:
-  explicit Stream(std::uint64_t seed) : state_(seed) {}
-
-  std::uint64_t next()
-  {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-
-  /// uniform double in [0, 1), 53 random bits
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-
-  /// uniform integer in [0, n), n > 0, as `Random::uniform_index()`
-  std::uint64_t uniform_index(std::uint64_t n) { return Random::high_half_of_product(next(), n); }
-
-private:
-  std::uint64_t state_;
 };
 
 } // namespace internal
