@@ -70,8 +70,9 @@ public:
   /// of `std::array<double, 3>`), conservative as `is_covered()`. A fragment that straddles the
   /// boundary between two balls is covered by their union but by neither alone; without this test
   /// the engine splits it, and throws a dart at each piece, until single balls cover the pieces. The
-  /// engine calls it on children that no single ball covers, with the samples near the dart; a model
-  /// that does not define it gets single-ball tests only. `Triangle_fragment_traits_3` and
+  /// engine calls it, with the samples within 2 `radius` of the dart, on children that no single ball
+  /// covers, and on a fragment at the depth floor that no single ball covers; a model that does not
+  /// define it gets single-ball tests only. `Triangle_fragment_traits_3` and
   /// `Sphere_fragment_traits_3` define it. Its margin must be larger than `is_covered()`'s:
   /// the certificate (`is_maximal()`) proves coverage with single balls, on pieces small enough that
   /// one ball holds each with its margin, which is possible only where the union test left at least
