@@ -51,7 +51,10 @@ public:
   OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const;
 
   /// the area of a fragment, or an upper bound of it for models that sample with rejection; the engine
-  /// chooses fragments in proportion to it (requirement 2)
+  /// chooses fragments in proportion to it (requirement 2). It must return the same double for the
+  /// same fragment on every call, wherever the compiler inlines it: the engine files a fragment by
+  /// its area when it is pushed and checks it when it is drawn. (A difference of two products may
+  /// round differently where the compiler fuses a product and a sum into one instruction, FMA.)
   double area(const Fragment& f) const;
 
   /// a point uniformly distributed on `f`, or an empty optional if a rejection step refuses the dart,

@@ -135,8 +135,16 @@ public:
   /// one of the ranges, it grows along any chain of splits
   int level(const Fragment& f) const { return int((std::max)(f.halvings_theta, f.halvings_z)); }
 
-  /// paper Equation 1
-  double area(const Fragment& f) const { return area(rectangle(f)); }
+  /// paper Equation 1, from the widths of the cell's ranges, R^2 (pi / 2) 2^-halvings_theta
+  /// 2^-halvings_z, not from its bounds: the difference of two bounds, each a product, is one
+  /// instruction where the compiler fuses a product and a difference (FMA) and two where it does not,
+  /// so it could differ by a unit in the last place from one call to the next, and the engine needs
+  /// the same area for a fragment every time (its pool files a fragment by its area)
+  double area(const Fragment& f) const
+  {
+    return r_ * r_ * quarter_turn() * internal::power_of_half(f.halvings_theta) *
+           internal::power_of_half(f.halvings_z);
+  }
   /// paper Equation 1, for any rectangle
   double area(const Rectangle& f) const { return r_ * r_ * (f.theta1 - f.theta0) * (f.z1 - f.z0); }
 
