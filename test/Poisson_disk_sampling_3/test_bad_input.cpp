@@ -206,6 +206,37 @@ TEST(BadInput, DistancesOutsideTheHandledRange)
   }
 }
 
+// An area above the largest double, of one triangle or of their sum, is refused by name in either
+// size mode: the message said the surface had no part of positive, finite area.
+TEST(BadInput, AreasAboveTheDoubles)
+{
+  std::vector<Point> p = {Point(10, 0, 0), Point(11, 0, 0), Point(10, 1, 0),
+                          Point(0, 0, 0),  Point(1e160, 0, 0), Point(0, 1e160, 0)};
+  std::vector<std::array<std::size_t, 3>> t = {{0, 1, 2}, {3, 4, 5}};
+  std::vector<Point> out;
+  auto message = [&](auto&& call) -> std::string {
+    try {
+      call();
+    } catch(const PDS::Invalid_input& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  for(int mode = 0; mode < 2; ++mode) {
+    const std::string what = message([&] {
+      if(mode == 0) PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(1e150));
+      else PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50));
+    });
+    EXPECT_NE(what.find("triangle 1 has an area above the largest double"), std::string::npos) << mode << ": " << what;
+  }
+  // triangles of finite areas whose sum is not
+  p = {Point(0, 0, 0), Point(1e154, 0, 0), Point(0, 3e154, 0), Point(0, 0, 1e154)};
+  t = {{0, 1, 2}, {0, 2, 3}};
+  const std::string what = message(
+      [&] { PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50)); });
+  EXPECT_NE(what.find("the surface's area overflows a double"), std::string::npos) << what;
+}
+
 TEST(BadInput, RadiusBelowCoordinatePrecision)
 {
   Mesh m;

@@ -419,4 +419,46 @@ TEST(MeshSampling, FacesFarSmallerThanTheLargestAreSampled)
   }
 }
 
+// Triangles and fragments whose areas are below the doubles, though their corners are not on one
+// line, are sampled and certified like any other. A triangle with edges 1e-162 long, next to a unit
+// triangle 10 away, was skipped as one of zero area (its cross product underflowed), by the sampler and
+// the certificate alike, which then certified a set 10 away from it. On a sliver 1 long and 1e-315 to
+// 1e-322 high (areas 5e-316 to 5e-323, subnormal), fragments whose areas underflowed were dropped
+// as of zero area, and the sampler left points of it up to 2.6 D from every sample, or stopped at a precondition
+// of the fragment pool; the certificate found the gaps.
+TEST(MeshSampling, AreasBelowTheDoublesAreSampled)
+{
+  for(double side : {1e-162, 1e-200}) {
+    const std::vector<Point> p = {Point(10, 0, 0), Point(11, 0, 0), Point(10, 1, 0),
+                                  Point(0, 0, 0),  Point(side, 0, 0), Point(0, side, 0)};
+    const std::vector<std::array<std::size_t, 3>> t = {{0, 1, 2}, {3, 4, 5}};
+    std::vector<Point> out;
+    PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(1.));
+    ASSERT_EQ(out.size(), 2u) << side;
+    EXPECT_EQ(std::count_if(out.begin(), out.end(), [](const Point& q) { return q.x() < 1e-100 && q.y() < 1e-100; }), 1)
+        << side;
+    EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, out, 1.)) << side;
+    EXPECT_FALSE(PDS::is_maximal_on_polygon_soup(p, t, std::vector<Point>{Point(10.3, 0.3, 0)}, 1.)) << side;
+  }
+  for(double height : {1e-315, 1e-320, 1e-322}) {
+    const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0.37, height, 0)};
+    const std::vector<std::array<std::size_t, 3>> t = {{0, 1, 2}};
+    for(double d : {0.01, 0.001}) {
+      std::vector<Point> out;
+      PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(d));
+      ASSERT_FALSE(out.empty());
+      EXPECT_TRUE(PDS::is_poisson_disk_set(out, d)) << height << " " << d;
+      EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, out, d)) << height << " " << d;
+      // independently: every point of the sliver is within its height of [0, 1] on the x axis, so
+      // the samples, sorted along it, must leave no gap of 2 d, nor d at either end
+      std::vector<double> x;
+      for(const Point& q : out) x.push_back(q.x());
+      std::sort(x.begin(), x.end());
+      double widest = 2 * (std::max)(x.front(), 1 - x.back());
+      for(std::size_t i = 1; i < x.size(); ++i) widest = (std::max)(widest, x[i] - x[i - 1]);
+      EXPECT_LT(widest, 2 * d) << height << " " << d;
+    }
+  }
+}
+
 } // namespace

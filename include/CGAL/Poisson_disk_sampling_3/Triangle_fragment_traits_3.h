@@ -119,7 +119,7 @@ public:
 
   /// adds the triangle (`q0`, `q1`, `q2`) and returns its face index; a triangle of zero area is
   /// kept (so that face indices follow the input) but has no fragment.
-  /// \throws Invalid_input if a coordinate is not finite
+  /// \throws Invalid_input if a coordinate is not finite, or if the area is above the largest double
   std::uint32_t add_triangle(const Point& q0, const Point& q1, const Point& q2)
   {
     const Point* q[3] = {&q0, &q1, &q2};
@@ -141,7 +141,10 @@ public:
       f.e2[i] = p2[i] - p0[i];
       scale = (std::max)(scale, std::abs(p0[i]) + std::abs(f.e1[i]) + std::abs(f.e2[i]));
     }
-    f.area = 0.5 * length(cross(f.e1, f.e2));
+    f.area = face_area(f.e1, f.e2);
+    if(!(f.area <= (std::numeric_limits<double>::max)()))
+      throw Invalid_input("triangle " + std::to_string(faces_.size()) +
+                          " has an area above the largest double; scale the input");
     classify(f);
     // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
     position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
@@ -232,8 +235,15 @@ public:
   {
     const Face& face = faces_[f.face];
     const double det = double(f.e[0][0]) * f.e[1][1] - double(f.e[1][0]) * f.e[0][1];
-    const double a = face.area * std::abs(det) * internal::power_of_half(2 * std::size_t(f.level));
-    return f.piece == 0 ? a : a * piece_share(face, f.piece);
+    double a = face.area * std::abs(det) * internal::power_of_half(2 * std::size_t(f.level));
+    if(f.piece != 0) a *= piece_share(face, f.piece);
+    // A fragment of a triangle of positive area, and of positive area itself (det != 0), must stay in
+    // the pool until it is covered, however small the double of its area: on a sliver, a fragment
+    // 1e-3 long and 1e-320 wide has an area below the doubles, and dropping it as a fragment of zero
+    // area left a part of the sliver 1e-3 long uncovered. The smallest positive double stands in for
+    // it: such a fragment gets its darts after the others, which is what an area that small means.
+    if(a > 0 || det == 0 || !(face.area > 0)) return a;
+    return std::numeric_limits<double>::denorm_min();
   }
 
   /// a point uniformly distributed on the fragment, never refused
@@ -1010,6 +1020,28 @@ private:
     return Point{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
   }
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  // the area of the triangle of edges e1 and e2: half the length of their cross product, computed on
+  // the edges scaled by the power of two that brings their largest coordinate to [1, 2), which is
+  // exact, then scaled back. Zero only for edges on one line. A positive area below the doubles comes
+  // out as the smallest positive double, as in area(): the cross product of edges 1e-162 long
+  // underflows, and such a triangle was skipped as one of zero area, by the sampler and by the
+  // certificate alike.
+  static double face_area(const Point& e1, const Point& e2)
+  {
+    double m = 0;
+    for(int i = 0; i < 3; ++i) m = (std::max)({m, std::abs(e1[i]), std::abs(e2[i])});
+    if(!(m > 0) || !std::isfinite(m)) return 0.5 * length(cross(e1, e2));
+    const int k = std::ilogb(m);
+    Point a, b;
+    for(int i = 0; i < 3; ++i) {
+      a[i] = std::ldexp(e1[i], -k);
+      b[i] = std::ldexp(e2[i], -k);
+    }
+    const double scaled = 0.5 * length(cross(a, b));
+    if(!(scaled > 0)) return scaled;
+    const double area = std::ldexp(scaled, 2 * k);
+    return area > 0 ? area : std::numeric_limits<double>::denorm_min();
+  }
   // |a|; where its square is not a normal double (a cross product below about 1e-150 or above about
   // 1e150: a triangle smaller than 1e-75 or larger than 1e75), computed on a divided by its largest
   // coordinate, since the square underflows to zero or overflows

@@ -65,8 +65,11 @@ inline std::string number_text(double x)
 /// the message ("sample", "certify")
 inline void check_surface_area(double area, const char* purpose)
 {
-  if(!(area > 0) || !(area <= std::numeric_limits<double>::max()))
-    throw Invalid_input(std::string("the surface has no part of positive, finite area to ") + purpose);
+  if(!(area > 0))
+    throw Invalid_input(std::string("the surface has no part of positive area to ") + purpose);
+  if(!(area <= std::numeric_limits<double>::max()))
+    throw Invalid_input(std::string("the surface's area overflows a double (above about 1.8e308); scale the "
+                                    "input to ") + purpose);
 }
 
 } // namespace internal
