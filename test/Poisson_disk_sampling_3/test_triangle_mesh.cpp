@@ -419,15 +419,37 @@ TEST(MeshSampling, FacesFarSmallerThanTheLargestAreSampled)
   }
 }
 
-// Triangles and fragments whose areas are below the doubles, though their corners are not on one
-// line, are sampled and certified like any other. A triangle with edges 1e-162 long, next to a unit
-// triangle 10 away, was skipped as one of zero area (its cross product underflowed), by the sampler and
-// the certificate alike, which then certified a set 10 away from it. On a sliver 1 long and 1e-315 to
-// 1e-322 high (areas 5e-316 to 5e-323, subnormal), fragments whose areas underflowed were dropped
-// as of zero area, and the sampler left points of it up to 2.6 D from every sample, or stopped at a precondition
-// of the fragment pool; the certificate found the gaps.
-TEST(MeshSampling, AreasBelowTheDoublesAreSampled)
+// Triangles and fragments whose areas round to zero, though their corners are not on one line, are
+// sampled and certified like any other. A triangle with edges 1e-162 long, next to a unit triangle 10
+// away, was skipped as one of zero area (its cross product underflowed), by the sampler and the
+// certificate alike, which then certified a set 10 away from it. On a sliver 1 long and 1e-315 to
+// 1e-322 high (areas 5e-316 to 5e-323, subnormal), fragments whose areas underflowed were dropped as
+// of zero area, and the sampler left points of it up to 2.6 D from every sample, or stopped at a
+// precondition of the fragment pool; the certificate found the gaps.
+TEST(MeshSampling, AreasThatRoundToZeroAreSampled)
 {
+  // Corners on one line in decimal but not as doubles, whose cross product rounds to zero: slivers 24
+  // and 1.4 long, which the sampler and the certificate skipped as of zero area (the set of one sample
+  // at (100.3, 0.3, 0), far from the first, was certified at 0.8). The probes along their longest
+  // edges are within 1e-15 of the slivers, whose width the distance test's margin of 1e-9 D covers.
+  const double ulp = std::ldexp(1., -52);
+  for(const auto& [q1, q2, d] : {std::make_tuple(Point(0.26, 1.4, 0.62), Point(4.03, 21.7, 9.61), 0.5),
+                                 std::make_tuple(Point(1 + ulp, 1, 0), Point(1, 1 - ulp, 0), 0.1)}) {
+    const std::vector<Point> p = {Point(0, 0, 0), q1, q2, Point(100, 0, 0), Point(101, 0, 0), Point(100, 1, 0)};
+    const std::vector<std::array<std::size_t, 3>> t = {{0, 1, 2}, {3, 4, 5}};
+    ASSERT_FALSE(CGAL::collinear(p[0], p[1], p[2]));
+    std::vector<Point> out;
+    PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(d));
+    EXPECT_TRUE(PDS::is_poisson_disk_set(out, d)) << q2;
+    EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, out, d)) << q2;
+    EXPECT_FALSE(PDS::is_maximal_on_polygon_soup(p, t, std::vector<Point>{Point(100.3, 0.3, 0)}, 0.8)) << q2;
+    for(int i = 0; i <= 1000; ++i) {
+      const Point probe = CGAL::ORIGIN + (double(i) / 1000) * (q2 - CGAL::ORIGIN);
+      double nearest = std::numeric_limits<double>::infinity();
+      for(const Point& q : out) nearest = (std::min)(nearest, CGAL::squared_distance(q, probe));
+      ASSERT_LE(nearest, d * d * (1 + 1e-9)) << probe;
+    }
+  }
   for(double side : {1e-162, 1e-200}) {
     const std::vector<Point> p = {Point(10, 0, 0), Point(11, 0, 0), Point(10, 1, 0),
                                   Point(0, 0, 0),  Point(side, 0, 0), Point(0, side, 0)};

@@ -8,6 +8,7 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -1022,10 +1023,12 @@ private:
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
   // the area of the triangle of edges e1 and e2: half the length of their cross product, computed on
   // the edges scaled by the power of two that brings their largest coordinate to [1, 2), which is
-  // exact, then scaled back. Zero only for edges on one line. A positive area below the doubles comes
-  // out as the smallest positive double, as in area(): the cross product of edges 1e-162 long
-  // underflows, and such a triangle was skipped as one of zero area, by the sampler and by the
-  // certificate alike.
+  // exact, then scaled back. Zero only for edges on one line, decided exactly: where the cross product
+  // rounds to zero (about a fifth of the triples of decimal coordinates that lie on one line in
+  // decimal do not as doubles, and rounded to zero: such slivers were skipped, by the sampler and by
+  // the certificate alike), it is computed again in rationals. A positive area below the doubles
+  // comes out as the smallest positive double, as in area() (the cross product of edges 1e-162 long
+  // underflows).
   static double face_area(const Point& e1, const Point& e2)
   {
     double m = 0;
@@ -1037,7 +1040,15 @@ private:
       a[i] = std::ldexp(e1[i], -k);
       b[i] = std::ldexp(e2[i], -k);
     }
-    const double scaled = 0.5 * length(cross(a, b));
+    Point c = cross(a, b);
+    if(c[0] == 0 && c[1] == 0 && c[2] == 0) {
+      typedef CGAL::Exact_rational ET;
+      for(int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, l = (i + 2) % 3;
+        c[i] = CGAL::to_double(ET(a[j]) * ET(b[l]) - ET(a[l]) * ET(b[j]));
+      }
+    }
+    const double scaled = 0.5 * length(c);
     if(!(scaled > 0)) return scaled;
     const double area = std::ldexp(scaled, 2 * k);
     return area > 0 ? area : std::numeric_limits<double>::denorm_min();
