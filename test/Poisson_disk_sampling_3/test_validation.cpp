@@ -291,4 +291,27 @@ TEST(IsMaximal, SingleTriangleWithItsCornersIsMaximalForALargeDistance)
   EXPECT_LT(check.uncovered_area, 1e-3);
 }
 
+// A witness is a computed point: the certificate proves the surface point it stands for farther than
+// d from every sample, with a margin for its rounding. The triangle below is covered by the three
+// samples at distance 1, and its one point at distance exactly 1 from them is on its edge y = 1024, at
+// (1000, 1024): for (x, y) in it, a = |x - 1000| <= 0.5 and t = y - 1024 in [0, 0.5], so a^2 + t^2 <=
+// 2 max(a, t), and the point is within 1 of (1000, 1025) or of (999 or 1001, 1024). The centre of a
+// piece there, rounded to (1000, 1024 - 1.1e-13), off the triangle and farther than 1 from the samples,
+// was given as a witness: `false` with a point, for a set that is maximal. Now no gap is proven
+// there, and the answer is undecided (`false` with no point): the set is maximal with no margin.
+TEST(IsMaximal, NoWitnessOffTheSurface)
+{
+  const std::vector<Point> p{{999.69, 1024.2, 0}, {999.7, 1024, 0}, {1000.45, 1024, 0}};
+  const std::vector<std::array<int, 3>> t{{0, 1, 2}};
+  const std::vector<Point> samples{{999, 1024, 0}, {1001, 1024, 0}, {1000, 1025, 0}};
+  const auto check = PDS::is_maximal_on_polygon_soup(p, t, samples, 1.);
+  EXPECT_FALSE(check.uncovered_point.has_value()) << *check.uncovered_point;
+  // with the samples 1e-9 farther apart, (1000, 1024) is uncovered, and a witness near it is found
+  const std::vector<Point> apart{{999 - 1e-9, 1024, 0}, {1001 + 1e-9, 1024, 0}, {1000, 1025 + 1e-9, 0}};
+  const auto gap = PDS::is_maximal_on_polygon_soup(p, t, apart, 1.);
+  EXPECT_FALSE(gap);
+  ASSERT_TRUE(gap.uncovered_point.has_value());
+  for(const Point& q : apart) EXPECT_GT(CGAL::squared_distance(q, *gap.uncovered_point), 1.);
+}
+
 } // namespace

@@ -27,10 +27,11 @@ struct Maximality_check
   /// upper bound of the uncovered area (pieces are refined down to area max(d^2 / 64, 2^-20 of the
   /// surface's area) before being counted)
   double uncovered_area = 0;
-  /// when not maximal, a point of the surface proven farther than the minimum distance from every
-  /// sample (a place where one more sample fits), if one was found. `maximal` false and no point
-  /// means undecided: the certificate's bounds on work and memory ran out before it could prove the
-  /// pieces left either covered or uncovered (see the user manual, "Validation")
+  /// when not maximal, a point of the surface, up to the rounding of its coordinates, proven farther
+  /// than the minimum distance from every sample, with a margin for that rounding (a place where one
+  /// more sample fits), if one was found. `maximal` false and no point means undecided: the
+  /// certificate's bounds on work, memory or depth ran out before it could prove the pieces left
+  /// either covered or uncovered (see the user manual, "Validation")
   std::optional<Point_3> uncovered_point;
   /// `maximal`
   explicit operator bool() const { return maximal; }
@@ -62,11 +63,14 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 ///
 /// Each face is split by midpoints until the ball of radius d around one sample holds the three
 /// corners of each piece, with a margin larger than the rounding error of the corners, down to pieces
-/// 2^-48 the size of their face. A `true` answer is a proof. A piece whose centroid is farther than d
-/// from every sample (decided exactly) is a proven gap, reported as `uncovered_point`. The work and
+/// 2^-48 the size of their face. A `true` answer is a proof. A piece whose centroid, as computed, is
+/// farther than d from every sample by more than twice the rounding of the surface's points
+/// (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that the
+/// exact centroid is farther than d; the computed one is reported as `uncovered_point`. The work and
 /// the memory are bounded (10 million pieces in the last phase, 2.5 million waiting at a time): on
-/// slivers far thinner than d, which midpoint subdivision must cut across as often as along, the
-/// answer may be `false` with no `uncovered_point`, undecided.
+/// slivers far thinner than d, which midpoint subdivision must cut across as often as along, and on
+/// sets maximal with no margin (a point of the surface at distance d from the samples), the answer
+/// may be `false` with no `uncovered_point`, undecided. Coordinates are read as the nearest doubles.
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel

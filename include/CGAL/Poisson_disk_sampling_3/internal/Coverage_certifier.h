@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -22,7 +24,8 @@ struct Certificate
 {
   bool maximal = true;
   double uncovered_area = 0;   // area of the fragments not proven covered (an upper bound)
-  bool has_witness = false;    // a point of the surface proven farther than D from every sample
+  bool has_witness = false;    // a point within the position error of a surface point farther than D
+                               // from every sample
   std::array<double, 3> witness{{0, 0, 0}};
 };
 
@@ -31,15 +34,15 @@ struct Certificate
 /// each piece (the model's conservative `is_covered`).
 ///
 /// The work and the memory are bounded. A piece whose reference point is farther than D from every
-/// sample (decided exactly) is a proven gap: it is refined only down to `leaf_area` for the area
-/// estimate; once a gap is proven and a quarter of `budget` more pieces decided, so is every piece not
-/// proven covered. Pieces still undecided below D^2 / 2^24 are deferred: in a maximal set they are the
-/// few that sit where two ball boundaries cross close to a piece's edge, and they are refined
-/// breadth-first down to `max_depth`, until a gap is proven or a budget is spent. Around a real gap,
-/// many pieces straddle its boundary; refining all of them depth-first would take time exponential in
-/// the depth. At most `budget / 4` pieces wait at a time; beyond that a piece counts as not proven
-/// covered, as do the pieces left when the budget is spent: the answer is then `false` with no
-/// witness, undecided.
+/// sample, by more than the point's rounding (decided exactly), is a proven gap: it is refined only
+/// down to `leaf_area` for the area estimate; once a gap is proven and a quarter of `budget` more
+/// pieces decided, so is every piece not proven covered. Pieces still undecided below D^2 / 2^24 are
+/// deferred: in a maximal set they are the few that sit where two ball boundaries cross close to a
+/// piece's edge, and they are refined breadth-first down to `max_depth`, until a gap is proven or a
+/// budget is spent. Around a real gap, many pieces straddle its boundary; refining all of them
+/// depth-first would take time exponential in the depth. At most `budget / 4` pieces wait at a time;
+/// beyond that a piece counts as not proven covered, as do the pieces left when the budget is spent:
+/// the answer is then `false` with no witness, undecided.
 template <class Traits>
 Certificate certify_coverage(const Traits& traits, const Point_hash_grid& samples, double d,
                              int max_depth = 48, std::size_t budget = 10000000)
@@ -61,7 +64,15 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   Point_hash_grid::Nearby_queries near_samples(samples);
   std::vector<Fragment> children;
   std::vector<const double*> near;
-  const double d2_near = d * d * (1 + 1e-9);
+  // A reference point is computed: it lies within the model's position error of the surface point
+  // it stands for, not on it. A gap is proven where no sample is within d plus twice that error (the
+  // error bounds each coordinate; the next double above the sum makes up for its rounding), so that
+  // the surface point itself is farther than d from every sample; nearer, no gap is proven there,
+  // and a piece that no single ball covers is split. (Without the margin, the centre of a piece,
+  // rounded off a triangle's edge near its corner, the one point of the triangle at distance d from
+  // the samples, was the witness of a set that was maximal.)
+  const double d_gap = std::nextafter(d + 2 * traits.position_error(), std::numeric_limits<double>::infinity());
+  const double d2_near = d_gap * d_gap * (1 + 1e-9);
 
   enum Verdict { COVERED, GAP_LEAF, SPLIT };
   // decides one piece; records a proven gap
@@ -70,16 +81,16 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     decided_after_gap += result.has_witness;
     const std::array<double, 3> ref = traits.reference_point(item.fragment);
     near.clear();
-    bool ref_covered = false;
-    near_samples.for_each_near(ref.data(), d, [&](Point_hash_grid::Index, const double* q) {
+    bool ref_near = false; // a sample within d_gap of the reference point: no gap proven there
+    near_samples.for_each_near(ref.data(), d_gap, [&](Point_hash_grid::Index, const double* q) {
       const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
       if(dx * dx + dy * dy + dz * dz > d2_near) return;
       near.push_back(q);
-      if(!ref_covered && compare_distance_exact(ref.data(), q, d) != CGAL::LARGER) ref_covered = true;
+      if(!ref_near && compare_distance_exact(ref.data(), q, d_gap) != CGAL::LARGER) ref_near = true;
     });
     for(const double* q : near)
       if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) return COVERED;
-    if(ref_covered) return SPLIT;
+    if(ref_near) return SPLIT;
     result.maximal = false;
     if(!result.has_witness) {
       result.has_witness = true;
