@@ -69,7 +69,9 @@ public:
   static std::uint64_t high_half_of_product(std::uint64_t x, std::uint64_t n)
   {
 #if defined(__SIZEOF_INT128__)
-    return std::uint64_t((static_cast<unsigned __int128>(x) * n) >> 64);
+    // __extension__: the type is GCC's and Clang's, which -pedantic-errors would refuse
+    __extension__ typedef unsigned __int128 Wide;
+    return std::uint64_t((static_cast<Wide>(x) * n) >> 64);
 #else
     return high_half_of_product_by_halves(x, n);
 #endif
