@@ -28,6 +28,18 @@ void sample(const Mesh& m, const NP& np)
   PDS::sample_triangle_mesh(m, std::back_inserter(out), np);
 }
 
+// what a call throws as an exception of type E, or "no exception"
+template <class E, class Call>
+std::string what_thrown(Call&& call)
+{
+  try {
+    call();
+  } catch(const E& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
 TEST(BadInput, EmptyMesh)
 {
   EXPECT_THROW(sample(Mesh(), PDS::parameters::radius(0.1)), PDS::Invalid_input);
@@ -76,6 +88,31 @@ TEST(BadInput, BadSizes)
   EXPECT_THROW(sample(m, CGAL::parameters::default_values()), PDS::Invalid_input) << "no size";
   EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).minimum_distance(0.2)), PDS::Invalid_input) << "two sizes";
   EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).number_of_points(10)), PDS::Invalid_input) << "two sizes";
+}
+
+// A parameter given twice is refused by name, not read once and dropped once unsaid: radius(0.1)
+// .radius(0.05) sampled at 0.05.
+TEST(BadInput, ParameterGivenTwice)
+{
+  const Mesh m = triangle();
+  std::vector<Point> out;
+  EXPECT_EQ(what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::radius(0.1).radius(0.05)); }),
+            "Poisson_disk_sampling_3: radius is given more than once");
+  EXPECT_EQ(what_thrown<PDS::Invalid_input>([&] {
+              sample(m, PDS::parameters::random_seed(1).minimum_distance(0.2).random_seed(2));
+            }),
+            "Poisson_disk_sampling_3: random_seed is given more than once");
+  EXPECT_EQ(what_thrown<PDS::Invalid_input>([&] {
+              PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, 1), std::back_inserter(out),
+                                 PDS::parameters::number_of_points(10).maximum_number_of_points(100)
+                                     .maximum_number_of_points(1000));
+            }),
+            "Poisson_disk_sampling_3: maximum_number_of_points is given more than once");
+  // each once, in any order, is fine
+  EXPECT_EQ(what_thrown<PDS::Invalid_input>([&] {
+              sample(m, PDS::parameters::random_seed(1).maximum_number_of_points(1000).minimum_distance(0.2));
+            }),
+            "no exception");
 }
 
 TEST(BadInput, TooManyPointsIsRefusedBeforeAllocating)
@@ -290,11 +327,33 @@ TEST(BadInput, BadSpheres)
   for(double sq : {0., inf})
     EXPECT_THROW(PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, sq), std::back_inserter(out), PDS::parameters::radius(0.1)),
                  PDS::Invalid_input);
+  // a sphere of radius 1e160 has a squared radius that overflows, one of 1e-170 one that underflows:
+  // the message names the squared radius, since the radius itself is finite and positive
+  for(double r : {1e160, 1e-170}) {
+    const std::string what = what_thrown<PDS::Invalid_input>([&] {
+      PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, r * r), std::back_inserter(out), PDS::parameters::number_of_points(10));
+    });
+    EXPECT_NE(what.find("the sphere's squared radius"), std::string::npos) << r << ": " << what;
+  }
+}
+
+// A negative index in a soup is named as it is, not as the size_t it converts to.
+TEST(BadInput, NegativeIndexInASoup)
+{
+  const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  const std::vector<std::array<int, 3>> t = {{0, 1, 2}, {0, -1, 2}};
+  std::vector<Point> out;
+  EXPECT_EQ(what_thrown<PDS::Invalid_input>([&] {
+              PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::radius(0.1));
+            }),
+            "Poisson_disk_sampling_3: polygon 1 refers to point -1 of 3");
 }
 
 TEST(BadInput, UnreachableCount)
 {
-  // 200 far-apart tiny triangles: each has its own sample whatever the distance, so 50 is impossible
+  // 200 tiny triangles on a line, 1000 apart: the count depends on the distance only through how
+  // many neighbours a sample's ball reaches, and jumps from about 58 (distances from 2000 to 3000)
+  // to about 40 (from 3000 to 4000): 50 is out of reach
   std::vector<Point> p;
   std::vector<std::array<std::size_t, 3>> t;
   for(std::size_t i = 0; i < 200; ++i) {
@@ -303,8 +362,12 @@ TEST(BadInput, UnreachableCount)
     t.push_back({3 * i, 3 * i + 1, 3 * i + 2});
   }
   std::vector<Point> out;
-  EXPECT_THROW(PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50)),
-               PDS::Target_not_reached);
+  const std::string what = what_thrown<PDS::Target_not_reached>(
+      [&] { PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50)); });
+  // the tolerance is written as a number, not as 1.000000
+  EXPECT_NE(what.find("no minimum distance gave 50 points within 1 (1% of them, at least one); the closest had "),
+            std::string::npos)
+      << what;
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_SAMPLE_SPHERE_H
 
 #include <CGAL/Poisson_disk_sampling_3/Sphere_fragment_traits_3.h>
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/parameters.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_surface.h>
 
@@ -21,10 +22,16 @@ namespace internal {
 template <class K>
 Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 {
+  // a sphere is given by its squared radius, whose double may overflow (radii from about 1e154 up) or
+  // underflow (below about 1e-162) where the radius would not: that is the number to name
+  const double squared_radius = CGAL::to_double(sphere.squared_radius());
+  if(!(squared_radius > 0) || !std::isfinite(squared_radius))
+    throw Invalid_input("the sphere's squared radius (" + number_text(squared_radius) +
+                        " as a double) must be positive and finite");
   const auto& c = sphere.center();
   return Sphere_fragment_traits_3(
       std::array<double, 3>{{CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())}},
-      std::sqrt(CGAL::to_double(sphere.squared_radius())));
+      std::sqrt(squared_radius));
 }
 
 } // namespace internal
@@ -43,7 +50,8 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 ///        `sample_surface()`
 ///
 /// \returns the output iterator past the last point
-/// \throws Invalid_input for a sphere of zero or non-finite radius, a non-finite centre or a bad size
+/// \throws Invalid_input for a sphere whose squared radius is not positive and finite as a double, a
+///         non-finite centre or a bad size
 /// \throws Point_limit_exceeded when the request exceeds `maximum_number_of_points`
 /// \throws Target_not_reached when `number_of_points` cannot be met
 template <class K, class PointOutputIterator, class NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -71,9 +71,44 @@ inline std::size_t to_size(double n)
   return n < double(largest) ? std::size_t(n) : largest;
 }
 
+/// how many times a chain of named parameters gives the parameter of tag `Query`
+template <class NamedParameters, class Query>
+struct Times_given : std::integral_constant<int, 0>
+{};
+template <class T, class Tag, class Base, class Query>
+struct Times_given<CGAL::Named_function_parameters<T, Tag, Base>, Query>
+  : std::integral_constant<int, int(std::is_same<Tag, Query>::value) + Times_given<Base, Query>::value>
+{};
+template <class T, class Tag, class Base, class Query>
+struct Times_given<parameters::Named_parameters<T, Tag, Base>, Query>
+  : Times_given<CGAL::Named_function_parameters<T, Tag, Base>, Query>
+{};
+
+/// Refuses a chain that gives one of the parameters the samplers read more than once
+/// (`radius(0.1).radius(0.05)`): CGAL would read one of the two and drop the other unsaid.
+template <class NamedParameters>
+void check_given_once()
+{
+  const int times[] = {Times_given<NamedParameters, internal_np::radius_t>::value,
+                       Times_given<NamedParameters, internal_np::minimum_distance_t>::value,
+                       Times_given<NamedParameters, internal_np::number_of_points_t>::value,
+                       Times_given<NamedParameters, internal_np::maximum_number_of_points_t>::value,
+                       Times_given<NamedParameters, internal_np::statistics_t>::value,
+                       Times_given<NamedParameters, internal_np::concurrency_t>::value,
+                       Times_given<NamedParameters, CGAL::internal_np::random_seed_t>::value,
+                       Times_given<NamedParameters, CGAL::internal_np::vertex_point_t>::value,
+                       Times_given<NamedParameters, CGAL::internal_np::geom_traits_t>::value};
+  const char* const names[] = {"radius",     "minimum_distance", "number_of_points",
+                               "maximum_number_of_points", "statistics", "concurrency",
+                               "random_seed", "vertex_point_map", "geom_traits"};
+  for(int i = 0; i < 9; ++i)
+    if(times[i] > 1) throw Invalid_input(std::string(names[i]) + " is given more than once");
+}
+
 template <class NamedParameters>
 Size_request read_size(const NamedParameters& np)
 {
+  check_given_once<NamedParameters>();
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
@@ -220,7 +255,9 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     }
   }
   throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points within " +
-                           std::to_string(tolerance) + "; the closest had " + std::to_string(best.size()));
+                           number_text(tolerance) + " (1% of them, at least one); the closest had " +
+                           std::to_string(best.size()) + ". The count jumps by a few points from one distance "
+                           "to the next: another random_seed may reach it");
 }
 
 /// Runs a size request and calls `emit(sample)` for each sample; fills the `statistics` parameter if

@@ -18,6 +18,7 @@
 #include <array>
 #include <iterator>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -84,6 +85,11 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
     std::array<std::size_t, 3> t{};
     std::size_t k = 0;
     for(const auto& v : polygon) {
+      if constexpr(std::is_signed<std::decay_t<decltype(v)>>::value) {
+        if(v < 0)
+          throw Invalid_input("polygon " + std::to_string(i) + " refers to point " + std::to_string(v) +
+                              " of " + std::to_string(p.size()));
+      }
       if(k < 3) t[k] = std::size_t(v);
       ++k;
     }

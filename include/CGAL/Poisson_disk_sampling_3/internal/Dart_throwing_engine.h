@@ -108,7 +108,8 @@ inline void check_expected_count(double total_area, double minimum_distance, std
   const double r = 0.5 * minimum_distance;
   const double expected = total_area / (3.14159265358979323846 * r * r);
   if(!(expected <= double(max_points)))
-    throw Point_limit_exceeded("the expected number of points (about " + std::to_string(expected) +
+    throw Point_limit_exceeded("the expected number of points (about " +
+                               (expected < 1e18 ? std::to_string(std::uint64_t(expected)) : number_text(expected)) +
                                ", area / (pi r^2)) exceeds maximum_number_of_points (" +
                                std::to_string(max_points) + "); use a larger radius or raise the bound");
 }
