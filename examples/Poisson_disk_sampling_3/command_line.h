@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the example programs' command lines share: numbers read strictly (a malformed one is an error,
-// never a silent 0), and the one size option every sampler takes (--radius, --minimum-distance or
-// --count) with --seed, passed on to the library, which checks the values and names the bad one.
+// never a silent 0), each option at most once (a second value is an error, never a silent choice),
+// and the one size option every sampler takes (--radius, --minimum-distance or --count) with --seed
+// and --maximum-number-of-points, passed on to the library, which checks the values and names the
+// bad one.
 
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
 #define CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
@@ -14,6 +16,7 @@
 #include <cstdlib>
 #include <functional>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -37,20 +40,38 @@ inline double read_number(int argc, char** argv, int& i)
   return value;
 }
 
+/// the options seen so far: each may be given once
+struct Seen_options
+{
+  std::set<std::string> seen;
+
+  /// records `option`; throws if it was given before
+  void once(const std::string& option)
+  {
+    if(!seen.insert(option).second) throw Usage_error(option + " is given more than once");
+  }
+};
+
+/// whether argv[i] asks for the usage; main() then prints it and returns 0
+inline bool is_help(const std::string& a) { return a == "--help" || a == "-h"; }
+
 struct Size_options
 {
-  std::optional<double> radius, minimum_distance, count, seed;
+  std::optional<double> radius, minimum_distance, count, seed, max_points;
 
-  /// reads argv[i] (and its value) if it is one of the size options or --seed; advances i
-  bool read(int argc, char** argv, int& i)
+  /// reads argv[i] (and its value) if it is one of the size options, --seed or
+  /// --maximum-number-of-points; advances i
+  bool read(int argc, char** argv, int& i, Seen_options& seen)
   {
     const std::string a = argv[i];
     std::optional<double>* target = a == "--radius" ? &radius
                                     : a == "--minimum-distance" ? &minimum_distance
                                     : a == "--count" ? &count
                                     : a == "--seed" ? &seed
+                                    : a == "--maximum-number-of-points" ? &max_points
                                     : nullptr;
     if(!target) return false;
+    seen.once(a);
     *target = read_number(argc, argv, i);
     return true;
   }
@@ -62,22 +83,33 @@ struct Size_options
       throw Usage_error("give one of --radius, --minimum-distance, --count");
     if(count && !(*count >= 1 && *count == std::floor(*count) && *count < 1e18))
       throw Usage_error("--count takes a positive integer");
+    if(max_points && !(*max_points >= 1 && *max_points == std::floor(*max_points) && *max_points < 1e18))
+      throw Usage_error("--maximum-number-of-points takes a positive integer");
     if(seed && !(*seed >= 0 && *seed <= 4294967295. && *seed == std::floor(*seed)))
       throw Usage_error("--seed takes an integer from 0 to 4294967295");
   }
 
-  /// calls `sample(np)` with the named parameters of the size given (or `default_distance`), the
-  /// seed, and `stats` to fill
+  /// Calls `sample(np)` with the named parameters of the size given, the seed, the bound and `stats`
+  /// to fill. With no size, `default_distance`; where that is not a positive, finite distance (a
+  /// surface whose area is zero or overflows), `default_count` points, so that the library names
+  /// what is wrong with the surface, not with a distance the user did not give.
   template <class Sample>
-  void sample_with(double default_distance, CGAL::Poisson_disk_sampling_3::Sampling_statistics& stats,
-                   Sample&& sample) const
+  void sample_with(double default_distance, std::size_t default_count,
+                   CGAL::Poisson_disk_sampling_3::Sampling_statistics& stats, Sample&& sample) const
   {
     namespace P = CGAL::Poisson_disk_sampling_3::parameters;
     const unsigned s = seed ? unsigned(*seed) : 0u;
-    if(count) sample(P::number_of_points(std::size_t(*count)).random_seed(s).statistics(std::ref(stats)));
-    else if(radius) sample(P::radius(*radius).random_seed(s).statistics(std::ref(stats)));
-    else sample(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)
-                    .random_seed(s).statistics(std::ref(stats)));
+    const std::size_t m = max_points ? std::size_t(*max_points) : std::size_t(100000000);
+    const bool use_count = count || (!radius && !minimum_distance &&
+                                      !(default_distance > 0 && std::isfinite(default_distance)));
+    if(use_count)
+      sample(P::number_of_points(count ? std::size_t(*count) : default_count)
+                 .random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats)));
+    else if(radius)
+      sample(P::radius(*radius).random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats)));
+    else
+      sample(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)
+                 .random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats)));
   }
 };
 

@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Poisson_disk_sampling_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// sample_mesh [MESH] [--radius R | --minimum-distance D | --count N] [--seed S] [-o OUT.ply]
+// sample_mesh [MESH] [--radius R | --minimum-distance D | --count N] [--seed S]
+//             [--maximum-number-of-points M] [-o OUT.ply]
 //
 // Samples a triangle mesh (any file CGAL reads: OFF, OBJ, PLY, STL; by default lion.off from CGAL's
 // data set) with a maximal Poisson-disk set, checks the result with the package's exact validation,
@@ -31,10 +32,12 @@ typedef PDS::Triangle_sample<K, Mesh::Face_index> Sample;
 
 namespace {
 
+const char* const usage_line = "usage: sample_mesh [MESH] [--radius R | --minimum-distance D | --count N] [--seed S]\n"
+                               "                   [--maximum-number-of-points M] [-o OUT.ply]\n";
+
 int usage(const char* message)
 {
-  std::cerr << "error: " << message << "\n"
-            << "usage: sample_mesh [MESH] [--radius R | --minimum-distance D | --count N] [--seed S] [-o OUT.ply]\n";
+  std::cerr << "error: " << message << "\n" << usage_line;
   return 2;
 }
 
@@ -75,12 +78,19 @@ int main(int argc, char** argv)
 {
   std::string mesh_file, out_file = "samples.ply";
   examples::Size_options size;
+  examples::Seen_options seen;
   try {
     for(int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if(size.read(argc, argv, i)) continue;
-      if(a == "-o" && i + 1 < argc) out_file = argv[++i];
-      else if(!a.empty() && a[0] == '-') throw examples::Usage_error("unknown option or missing value: " + a);
+      if(examples::is_help(a)) {
+        std::cout << usage_line;
+        return 0;
+      }
+      if(size.read(argc, argv, i, seen)) continue;
+      if(a == "-o" && i + 1 < argc) {
+        seen.once(a);
+        out_file = argv[++i];
+      } else if(!a.empty() && a[0] == '-') throw examples::Usage_error("unknown option or missing value: " + a);
       else if(mesh_file.empty()) mesh_file = a;
       else throw examples::Usage_error("more than one mesh");
     }
@@ -102,7 +112,7 @@ int main(int argc, char** argv)
     // with no size: about 10,000 points
     const double default_distance = std::sqrt(0.6965 * CGAL::Polygon_mesh_processing::area(mesh) / 10000);
     const auto start = std::chrono::steady_clock::now();
-    size.sample_with(default_distance, stats, [&](const auto& np) {
+    size.sample_with(default_distance, 10000, stats, [&](const auto& np) {
       PDS::sample_triangle_mesh_with_locations(mesh, std::back_inserter(samples), np);
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

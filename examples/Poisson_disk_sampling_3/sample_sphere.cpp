@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // sample_sphere [--center X Y Z] [--sphere-radius R] [--radius r | --minimum-distance D | --count N]
-//               [--seed S] [-o OUT.ply]
+//               [--seed S] [--maximum-number-of-points M] [-o OUT.ply]
 //
 // Samples a sphere (by default the unit sphere, about 10,000 points) with a maximal Poisson-disk set,
 // checks it, writes a binary PLY (x y z, nx ny nz) and prints one `key: value` a line.
@@ -25,10 +25,13 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 
 namespace {
 
+const char* const usage_line = "usage: sample_sphere [--center X Y Z] [--sphere-radius R] "
+                               "[--radius r | --minimum-distance D | --count N]\n"
+                               "                     [--seed S] [--maximum-number-of-points M] [-o OUT.ply]\n";
+
 int usage(const char* message)
 {
-  std::cerr << "error: " << message << "\nusage: sample_sphere [--center X Y Z] [--sphere-radius R] "
-               "[--radius r | --minimum-distance D | --count N] [--seed S] [-o OUT.ply]\n";
+  std::cerr << "error: " << message << "\n" << usage_line;
   return 2;
 }
 
@@ -39,10 +42,16 @@ int main(int argc, char** argv)
   double cx = 0, cy = 0, cz = 0, sphere_radius = 1;
   examples::Size_options size;
   std::string out_file = "sphere_samples.ply";
+  examples::Seen_options seen;
   try {
     for(int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if(size.read(argc, argv, i)) continue;
+      if(examples::is_help(a)) {
+        std::cout << usage_line;
+        return 0;
+      }
+      if(size.read(argc, argv, i, seen)) continue;
+      if(a == "--center" || a == "--sphere-radius" || a == "-o") seen.once(a);
       if(a == "--center") {
         cx = examples::read_number(argc, argv, i); // each call reads the next argument
         cy = examples::read_number(argc, argv, i);
@@ -66,7 +75,7 @@ int main(int argc, char** argv)
     const double default_distance =
         std::sqrt(0.6965 * 4 * 3.14159265358979323846 * sphere_radius * sphere_radius / 10000);
     const auto start = std::chrono::steady_clock::now();
-    size.sample_with(default_distance, stats, [&](const auto& np) {
+    size.sample_with(default_distance, 10000, stats, [&](const auto& np) {
       PDS::sample_sphere(sphere, std::back_inserter(points), np);
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
