@@ -1165,14 +1165,17 @@ TEST(CellHashTable, GridCellIsTheFloor)
 
 // The table against std::map, with cells near one another, then cells 2^31 and more apart on an axis
 // (whose coordinates relative to the first cell agree in their low 32 bits with cells already in),
-// inserted while the table grows.
+// inserted while the table grows; from tables sized for no cell (16 slots, then powers of two) and
+// for 37 and 1,000 cells (74 and 2,000 slots, whose probes wrap around from the last slot to the first).
 TEST(CellHashTable, FindsWhatWasInsertedNearAndFar)
 {
   using PDS::internal::Cell_hash_table;
   typedef std::array<std::int64_t, 3> C;
   Random rng(41);
-  for(int far_from = 0; far_from < 2; ++far_from) {
-    Cell_hash_table table;
+  for(int run = 0; run < 6; ++run) {
+    const int far_from = run % 2;
+    const std::size_t expected_cells[3] = {0, 37, 1000};
+    Cell_hash_table table(expected_cells[run / 2]);
     std::map<C, std::uint32_t> reference;
     auto random_cell = [&](bool far) {
       C c;
