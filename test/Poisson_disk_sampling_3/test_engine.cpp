@@ -396,6 +396,92 @@ TEST(Engine, RootsForTheDistanceCountAgainstTheBound)
   EXPECT_GT(samples.size(), 250u);
 }
 
+// Models that break the concept in ways a model's author may: each gets an error that says what is
+// wrong, not a crash, a hang, a silent gap, a biased set or memory filled to the last byte.
+// - areas that are not numbers, or negative: NaN children were dropped unsaid (a gap of 10 D), a
+//   negative root skipped unsaid, a NaN root read as "no part of positive area";
+struct Nan_children : Square_traits
+{
+  double area(const Fragment& f) const { return f.size < 1 ? std::nan("") : f.size * f.size; }
+};
+struct Negative_second_root : Square_traits
+{
+  template <class Out> Out initial_fragments(Out out) const
+  {
+    *out++ = Fragment{0, 0, 1};
+    *out++ = Fragment{2, 0, 1};
+    return out;
+  }
+  double area(const Fragment& f) const { return f.x >= 2 ? -1 : f.size * f.size; }
+};
+// - a refine() that writes a child of area 0 (skipped, as split()'s are) or NaN: the pool stopped at
+//   its precondition, or, built without assertions, never returned;
+struct Refines_badly : Square_traits
+{
+  double bad_size;
+  explicit Refines_badly(double bad_size) : bad_size(bad_size) {}
+  template <class PointRange, class Out>
+  bool refine(const Fragment& f, const PointRange& near, const PointRange&, double radius, Out children) const
+  {
+    for(const Point& c : near)
+      if(is_covered(f, c, radius)) return true;
+    std::vector<Fragment> kids;
+    split(f, std::back_inserter(kids));
+    for(const Fragment& k : kids) {
+      bool covered = false;
+      for(const Point& c : near) covered = covered || is_covered(k, c, radius);
+      if(!covered) *children++ = k;
+    }
+    if(f.size < 1) *children++ = Fragment{f.x, f.y, bad_size};
+    return false;
+  }
+};
+// - a model that samples with rejection and bounds its children's areas above its root's: the pool
+//   drew them as if their bound were the root's area, and the set was biased (with bounds 8 times
+//   the area, the second sample landed on the rejecting half 0.75 of the time instead of 0.58);
+struct Loose_bounds : Square_traits
+{
+  double factor;
+  explicit Loose_bounds(double factor) : factor(factor) {}
+  double area(const Fragment& f) const { return f.size < 1 ? factor * f.size * f.size : f.size * f.size; }
+  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const
+  {
+    if(f.size < 1 && rng.uniform() * factor >= 1) return std::nullopt;
+    return Square_traits::random_sample(f, rng);
+  }
+};
+// - coverage tests that never succeed: the fragments grew four times a level down to the depth floor.
+struct Never_covered : Square_traits
+{
+  bool is_covered(const Fragment&, const Point&, double) const { return false; }
+};
+
+TEST(Engine, ModelsThatBreakTheConceptAreRefused)
+{
+  auto what = [](auto&& traits, auto exception) -> std::string {
+    std::vector<Square_traits::Sample> samples;
+    try {
+      PDS::sample_surface(traits, std::back_inserter(samples), PDS::parameters::minimum_distance(0.1));
+    } catch(const decltype(exception)& e) {
+      return e.what();
+    }
+    return "no exception, " + std::to_string(samples.size()) + " samples";
+  };
+  EXPECT_NE(what(Nan_children(), PDS::Invalid_input("")).find("a fragment of area nan"), std::string::npos);
+  EXPECT_NE(what(Negative_second_root(), PDS::Invalid_input("")).find("a fragment of area -1"), std::string::npos);
+  EXPECT_NE(what(Refines_badly(std::nan("")), PDS::Invalid_input("")).find("a fragment of area nan"), std::string::npos);
+  // a child of area 0 holds nothing to sample: skipped, and the square is sampled as without it
+  const std::string zero = what(Refines_badly(0), PDS::Invalid_input(""));
+  EXPECT_EQ(zero.find("no exception, "), 0u) << zero;
+  EXPECT_EQ(zero, "no exception, " + std::to_string(sample_square(Square_traits(), 0.1, 0).size()) + " samples");
+  EXPECT_NE(what(Loose_bounds(8), PDS::Invalid_input("")).find("above the largest initial fragment's"),
+            std::string::npos);
+  // bounds twice the area stay below the root's (1/2 for the first children): sampled
+  EXPECT_EQ(what(Loose_bounds(2), PDS::Invalid_input("")).find("no exception, "), 0u);
+  EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 16 times the expected points"),
+            std::string::npos);
+}
+
 TEST(Engine, ModelMayAssignItsOutputIterator)
 {
   const Quarters_traits traits;

@@ -16,7 +16,18 @@
 ///   with rejection, uniform once accepted, and accepted with positive probability);
 /// - `is_covered()` is conservative: it returns `true` only if every point of the fragment is within
 ///   `radius` of `center`, rounding included;
-/// - splitting shrinks fragments, so that a fragment smaller than a ball's margin is covered by it.
+/// - splitting shrinks fragments, so that a fragment smaller than a ball's margin is covered by it;
+/// - areas are numbers, not negative (a fragment of area 0 is skipped), and no fragment's area is
+///   above the largest initial fragment's but by rounding (2^-20 of it): the engine files fragments
+///   by area relative to that one. A model that breaks one of these gets `Invalid_input`;
+/// - the operations are `const` and may be called at the same time from several threads: with
+///   `concurrency(CGAL::Parallel_tag())`, `area()`, `random_sample()`, `point()`, `is_covered()`,
+///   `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's threads (a model
+///   with scratch space or caches must keep them per thread).
+///
+/// A model whose fragments in wait outnumber 16 times the expected points plus its initial fragments
+/// (a model that follows the above makes fewer than twice as many) gets `Point_limit_exceeded`: its
+/// coverage tests may never succeed, or its samples may lie off their fragments.
 ///
 /// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Triangle_fragment_traits_3`
 /// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Sphere_fragment_traits_3`
@@ -26,7 +37,8 @@ public:
   /// \name Types
   /// @{
 
-  /// a piece of the surface; copied often, so keep it small
+  /// a piece of the surface; copied often, so keep it small. Default constructible and copyable (the
+  /// engine keeps fragments in arrays)
   typedef unspecified_type Fragment;
 
   /// what is produced for an accepted dart: its point and where it lies on the surface

@@ -158,7 +158,7 @@ public:
     double total_area = 0, max_area = 0;
     auto measure = [&](const Fragment& f) {
       ++roots;
-      const double a = traits_.area(f);
+      const double a = checked_area(f);
       total_area += a;
       if(a > max_area) max_area = a;
     };
@@ -183,6 +183,10 @@ public:
     if(check_expected_count_) check_expected_count(total_area, d_, max_points_);
 
     Active_fragment_pool<Item> pool(max_area);
+    // The pool files a fragment by its area relative to the largest root's: a larger one would be
+    // drawn as if its area were that one, less often than its area says. A model's children may
+    // exceed it by rounding (a part of the largest root whose area rounds up), not more.
+    max_child_area_ = max_area * (1 + 0x1.0p-20);
     auto push = [&](const Fragment& f) {
       const double a = traits_.area(f);
       if(a > 0) pool.push(make_item(f, 0), a);
@@ -206,8 +210,18 @@ public:
     std::vector<std::vector<Point_d>> near(max_batch), around(max_batch);
     std::vector<std::vector<Fragment>> children(max_batch);
 
+    // A bound on the fragments, far above what a model that follows the concept makes (at most 1.5
+    // times the expected points plus the roots, on CGAL's 133 meshes at 100 and 3,000 points), so
+    // that a model whose coverage tests never succeed, or whose samples lie off their fragments,
+    // stops with an error instead of filling the memory level by level down to the depth floor.
+    const double max_active = 16 * (double(expected) + double(roots)) + 65536;
     while(!pool.empty()) {
       if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
+      if(double(pool.size()) > max_active)
+        throw Point_limit_exceeded("the surface model's fragments in wait (" + std::to_string(pool.size()) +
+                                   ") exceed 16 times the expected points plus the initial fragments: are its "
+                                   "coverage tests conservative but able to succeed, and its samples on their "
+                                   "fragments?");
       // A batch throws n independent darts at the pool as it stands, then processes them in order:
       // the same process as throwing them one by one, because fragments are only ever a cover of the
       // free area, and a dart on a covered spot is rejected either way (design.md, "Batches").
@@ -338,7 +352,10 @@ public:
           ++stats.dropped_at_max_depth;
           return;
         }
-        for(const Fragment& c : kids) pool.push(make_item(c, depth + 1), traits_.area(c));
+        for(const Fragment& c : kids) {
+          const double a = checked_child_area(c);
+          if(a > 0) pool.push(make_item(c, depth + 1), a);
+        }
         stats.darts_on_covered += !d.accepted && kids.empty();
       };
       if(in_parallel(darts.size())) {
@@ -514,10 +531,33 @@ private:
     traits_.split(f, std::back_inserter(children));
     std::size_t kept = 0;
     for(const Fragment& c : children)
-      if(traits_.area(c) > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around))
+      if(checked_child_area(c) > 0 && !is_covered_by_any(c, near) && !is_covered_by_union(c, around))
         children[kept++] = c;
     children.erase(children.begin() + std::ptrdiff_t(kept), children.end());
     return false;
+  }
+
+  // The area of a fragment of the model, refused unless it is a number and not negative: a NaN was
+  // dropped unsaid (a gap), or read as "no part of positive area", and a child of area 0 or less
+  // from refine() stopped the pool at its precondition, or, without assertions, never returned.
+  double checked_area(const Fragment& f) const
+  {
+    const double a = traits_.area(f);
+    if(!(a >= 0))
+      throw Invalid_input("the surface model gave a fragment of area " + number_text(a) +
+                          "; areas must be numbers, not negative");
+    return a;
+  }
+
+  // checked_area(), and at most the largest root's area (up to rounding): see run()
+  double checked_child_area(const Fragment& f) const
+  {
+    const double a = checked_area(f);
+    if(a > max_child_area_)
+      throw Invalid_input("the surface model gave a child fragment of area " + number_text(a) +
+                          ", above the largest initial fragment's (" + number_text(max_child_area_) +
+                          "); a model that samples with rejection must keep its areas' bounds below it");
+    return a;
   }
 
   bool is_covered_by_any(const Fragment& f, const std::vector<Point_d>& centers) const
@@ -544,6 +584,7 @@ private:
   std::size_t max_points_;
   int max_depth_;
   bool check_expected_count_ = true;
+  double max_child_area_ = 0; // set by run()
 };
 
 } // namespace internal
