@@ -478,7 +478,7 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
             std::string::npos);
   // bounds twice the area stay below the root's (1/2 for the first children): sampled
   EXPECT_EQ(what(Loose_bounds(2), PDS::Invalid_input("")).find("no exception, "), 0u);
-  EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 16 times the expected points"),
+  EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 64 times the expected points"),
             std::string::npos);
 }
 

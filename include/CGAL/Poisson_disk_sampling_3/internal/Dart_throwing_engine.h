@@ -210,16 +210,17 @@ public:
     std::vector<std::vector<Point_d>> near(max_batch), around(max_batch);
     std::vector<std::vector<Fragment>> children(max_batch);
 
-    // A bound on the fragments, far above what a model that follows the concept makes (at most 1.5
-    // times the expected points plus the roots, on CGAL's 133 meshes at 100 and 3,000 points), so
-    // that a model whose coverage tests never succeed, or whose samples lie off their fragments,
-    // stops with an error instead of filling the memory level by level down to the depth floor.
-    const double max_active = 16 * (double(expected) + double(roots)) + 65536;
+    // A bound on the fragments, far above what the models make (the triangle model at most 1.5 times
+    // the expected points plus the roots, on CGAL's 133 meshes at 100 and 3,000 points; 33 times on
+    // a cylinder of 128 needles without its cuts of long faces), so that a model whose coverage tests
+    // never succeed, or whose samples lie off their fragments, stops with an error instead of filling
+    // the memory four times over at each level down to the depth floor.
+    const double max_active = 64 * (double(expected) + double(roots)) + 1048576;
     while(!pool.empty()) {
       if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
       if(double(pool.size()) > max_active)
         throw Point_limit_exceeded("the surface model's fragments in wait (" + std::to_string(pool.size()) +
-                                   ") exceed 16 times the expected points plus the initial fragments: are its "
+                                   ") exceed 64 times the expected points plus the initial fragments: are its "
                                    "coverage tests conservative but able to succeed, and its samples on their "
                                    "fragments?");
       // A batch throws n independent darts at the pool as it stands, then processes them in order:
