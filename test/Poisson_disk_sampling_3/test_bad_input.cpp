@@ -331,7 +331,8 @@ TEST(BadInput, BadSpheres)
   // the message names the squared radius, since the radius itself is finite and positive
   for(double r : {1e160, 1e-170}) {
     const std::string what = what_thrown<PDS::Invalid_input>([&] {
-      PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, r * r), std::back_inserter(out), PDS::parameters::number_of_points(10));
+      PDS::sample_sphere(K::Sphere_3(CGAL::ORIGIN, r * r), std::back_inserter(out),
+                         PDS::parameters::number_of_points(10));
     });
     EXPECT_NE(what.find("the sphere's squared radius"), std::string::npos) << r << ": " << what;
   }

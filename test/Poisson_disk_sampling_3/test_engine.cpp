@@ -469,7 +469,8 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
   };
   EXPECT_NE(what(Nan_children(), PDS::Invalid_input("")).find("a fragment of area nan"), std::string::npos);
   EXPECT_NE(what(Negative_second_root(), PDS::Invalid_input("")).find("a fragment of area -1"), std::string::npos);
-  EXPECT_NE(what(Refines_badly(std::nan("")), PDS::Invalid_input("")).find("a fragment of area nan"), std::string::npos);
+  EXPECT_NE(what(Refines_badly(std::nan("")), PDS::Invalid_input("")).find("a fragment of area nan"),
+            std::string::npos);
   // a child of area 0 holds nothing to sample: skipped, and the square is sampled as without it
   const std::string zero = what(Refines_badly(0), PDS::Invalid_input(""));
   EXPECT_EQ(zero.find("no exception, "), 0u) << zero;

@@ -98,9 +98,9 @@ void check_given_once()
                        Times_given<NamedParameters, CGAL::internal_np::random_seed_t>::value,
                        Times_given<NamedParameters, CGAL::internal_np::vertex_point_t>::value,
                        Times_given<NamedParameters, CGAL::internal_np::geom_traits_t>::value};
-  const char* const names[] = {"radius",     "minimum_distance", "number_of_points",
-                               "maximum_number_of_points", "statistics", "concurrency",
-                               "random_seed", "vertex_point_map", "geom_traits"};
+  const char* const names[] = {"radius",      "minimum_distance", "number_of_points", "maximum_number_of_points",
+                               "statistics",  "concurrency",      "random_seed",      "vertex_point_map",
+                               "geom_traits"};
   for(int i = 0; i < 9; ++i)
     if(times[i] > 1) throw Invalid_input(std::string(names[i]) + " is given more than once");
 }
