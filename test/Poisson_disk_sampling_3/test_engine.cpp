@@ -450,10 +450,15 @@ struct Loose_bounds : Square_traits
     return Square_traits::random_sample(f, rng);
   }
 };
-// - coverage tests that never succeed: the fragments grew four times a level down to the depth floor.
+// - coverage tests that never succeed: the fragments grew four times a level down to the depth floor;
 struct Never_covered : Square_traits
 {
   bool is_covered(const Fragment&, const Point&, double) const { return false; }
+};
+// - a random_sample() that refuses every dart: the engine drew for ever.
+struct Refuses_every_dart : Square_traits
+{
+  template <class Rng> std::optional<Sample> random_sample(const Fragment&, Rng&) const { return std::nullopt; }
 };
 
 TEST(Engine, ModelsThatBreakTheConceptAreRefused)
@@ -481,6 +486,16 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
   EXPECT_EQ(what(Loose_bounds(2), PDS::Invalid_input("")).find("no exception, "), 0u);
   EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 64 times the expected points"),
             std::string::npos);
+  // by default after 2^30 draws (13 to 21 s); here after 100,000
+  const Refuses_every_dart refuses;
+  PDS::internal::Dart_throwing_engine<Refuses_every_dart> engine(refuses, 0.1, 0, 1000);
+  engine.set_refusal_limit(100000);
+  try {
+    engine.run([](const Square_traits::Sample&) {});
+    ADD_FAILURE() << "no exception";
+  } catch(const PDS::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("darts in a row"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Engine, ModelMayAssignItsOutputIterator)

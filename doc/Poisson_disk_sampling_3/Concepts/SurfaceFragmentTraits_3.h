@@ -13,7 +13,8 @@
 /// Requirements the engine relies on:
 /// - the initial fragments tile the surface, and the children of a fragment tile it;
 /// - `random_sample()` is uniform with respect to area on the fragment (or, for models that sample
-///   with rejection, uniform once accepted, and accepted with positive probability);
+///   with rejection, uniform once accepted, and accepted with positive probability: a model that
+///   refuses 2^30 darts in a row gets `Invalid_input`);
 /// - `is_covered()` is conservative: it returns `true` only if every point of the fragment is within
 ///   `radius` of `center`, rounding included;
 /// - splitting shrinks fragments, so that a fragment smaller than a ball's margin is covered by it;
