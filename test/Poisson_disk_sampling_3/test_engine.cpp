@@ -484,8 +484,16 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
             std::string::npos);
   // bounds twice the area stay below the root's (1/2 for the first children): sampled
   EXPECT_EQ(what(Loose_bounds(2), PDS::Invalid_input("")).find("no exception, "), 0u);
-  EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 64 times the expected points"),
+  EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 64 times the samples"),
             std::string::npos);
+  // in count mode too, not as a run that overshot maximum_number_of_points
+  try {
+    std::vector<Square_traits::Sample> samples;
+    PDS::sample_surface(Never_covered(), std::back_inserter(samples), PDS::parameters::number_of_points(100));
+    ADD_FAILURE() << "no exception";
+  } catch(const PDS::Point_limit_exceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("exceed 64 times the samples"), std::string::npos) << e.what();
+  }
   // by default after 2^30 draws (13 to 21 s); here after 100,000
   const Refuses_every_dart refuses;
   PDS::internal::Dart_throwing_engine<Refuses_every_dart> engine(refuses, 0.1, 0, 1000);

@@ -402,6 +402,29 @@ TEST(MeshSampling, MessySoupIsCoveredAndDegenerateFacesSkipped)
   EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, points, 0.05));
 }
 
+// On strips much narrower than D a sample covers far less than pi r^2: 500 triangles 100 long and
+// 1e-4 wide, 0.01 apart, get 110 times the expected count (area / (pi r^2)) at D = 0.02, and their
+// fragments in wait outnumber the engine's old bound on them (64 times the expected count and the
+// roots, plus 2^20), which refused them as a broken model's. The bound now grows with the samples.
+TEST(MeshSampling, NarrowStripsOutnumberTheExpectedCount)
+{
+  std::vector<Point> p;
+  std::vector<std::array<std::size_t, 3>> t;
+  for(std::size_t k = 0; k < 500; ++k) {
+    const double y = 0.01 * double(k);
+    p.insert(p.end(), {Point(0, y, 0), Point(100, y, 0), Point(37.3, y + 1e-4, 0)});
+    t.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  const double d = 0.02, area = 500 * 100 * 1e-4 / 2, expected = area / (3.14159265358979 * d * d / 4);
+  std::vector<Point> out;
+  PDS::Sampling_statistics stats;
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                           PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
+  EXPECT_GT(double(out.size()), 100 * expected);
+  EXPECT_GT(double(stats.peak_active_fragments), 64 * (expected + 500) + 1048576) << "the old bound's regime";
+  EXPECT_TRUE(PDS::is_poisson_disk_set(out, d));
+}
+
 // Faces whose area is below the largest's / 2^1024 (a sliver 1e-310 high, subnormal, and one of
 // 1e-302 next to a face of 2e6): the pool's bin of such an area came from a quotient that overflowed,
 // and a search from there took about ten seconds per fragment, minutes in all. Sampled as any face.

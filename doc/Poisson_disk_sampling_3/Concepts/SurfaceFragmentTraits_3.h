@@ -26,10 +26,11 @@
 ///   `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's threads (a model
 ///   with scratch space or caches must keep them per thread).
 ///
-/// A model whose fragments in wait outnumber 64 times the expected points plus its initial fragments,
-/// plus about a million, gets `Point_limit_exceeded`: its coverage tests may never succeed, or its
-/// samples may lie off their fragments. (The triangle model keeps fewer than twice as many on CGAL's
-/// meshes; without its cuts of long thin faces, 33 times as many on a cylinder of 128 needles.)
+/// A model whose fragments in wait outnumber 64 times its samples so far, its expected points
+/// (area / (pi r^2)) and its initial fragments, plus about a million, gets `Point_limit_exceeded`:
+/// its coverage tests may never succeed, or its samples may lie off their fragments. (The triangle
+/// model keeps fewer than twice the expected points and the initial fragments on CGAL's meshes;
+/// without its cuts of long thin faces, 33 times on a cylinder of 128 needles.)
 ///
 /// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Triangle_fragment_traits_3`
 /// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Sphere_fragment_traits_3`

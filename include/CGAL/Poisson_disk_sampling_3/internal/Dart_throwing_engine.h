@@ -35,9 +35,10 @@ namespace internal {
 
 typedef std::array<double, 3> Point_d;
 
-/// The refusal of a model's roots for the distance, where they outnumber its whole roots far
-/// (`Point_limit_exceeded`, so that callers need not know it): the count search passes it on as it
-/// is, not as an overshoot of its target.
+/// The refusal of a model's pieces: its roots for the distance, where they outnumber its whole roots
+/// far, or its fragments in wait, where they outnumber its samples far (`Point_limit_exceeded`, so
+/// that callers need not know it): the count search passes it on as it is, not as an overshoot of its
+/// target.
 class Pieces_limit_exceeded : public Point_limit_exceeded
 {
 public:
@@ -218,19 +219,22 @@ public:
     std::vector<std::vector<Point_d>> near(max_batch), around(max_batch);
     std::vector<std::vector<Fragment>> children(max_batch);
 
-    // A bound on the fragments, far above what the models make (the triangle model at most 1.5 times
-    // the expected points plus the roots, on CGAL's 133 meshes at 100 and 3,000 points; 33 times on
-    // a cylinder of 128 needles without its cuts of long faces), so that a model whose coverage tests
-    // never succeed, or whose samples lie off their fragments, stops with an error instead of filling
-    // the memory four times over at each level down to the depth floor.
-    const double max_active = 64 * (double(expected) + double(roots)) + 1048576;
+    // A bound on the fragments in wait, far above what the models make, so that a model whose
+    // coverage tests never succeed, or whose samples lie off their fragments, stops with an error
+    // instead of filling the memory four times over at each level down to the depth floor. It grows
+    // with the samples accepted: on strips much narrower than D a sample covers far less than
+    // pi r^2, and the samples, with the fragments, outnumber `expected` a hundredfold (500 strips
+    // 1e-4 wide, 0.01 apart, at D = 0.02: 875,000 samples for 8,000 expected). The triangle model
+    // keeps at most 1.5 times the expected points plus the roots on CGAL's 133 meshes at 100 and 3,000
+    // points; without its cuts of long faces, 33 times on a cylinder of 128 needles.
+    const double fixed_active = 64 * (double(expected) + double(roots)) + 1048576;
     while(!pool.empty()) {
       if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
-      if(double(pool.size()) > max_active)
-        throw Point_limit_exceeded("the surface model's fragments in wait (" + std::to_string(pool.size()) +
-                                   ") exceed 64 times the expected points plus the initial fragments: are its "
-                                   "coverage tests conservative but able to succeed, and its samples on their "
-                                   "fragments?");
+      if(double(pool.size()) > fixed_active + 64 * double(stats.samples))
+        throw Pieces_limit_exceeded("the surface model's fragments in wait (" + std::to_string(pool.size()) +
+                                    ") exceed 64 times the samples, the expected points and the initial "
+                                    "fragments: are its coverage tests conservative but able to succeed, and "
+                                    "its samples on their fragments?");
       // A batch throws n independent darts at the pool as it stands, then processes them in order:
       // the same process as throwing them one by one, because fragments are only ever a cover of the
       // free area, and a dart on a covered spot is rejected either way (design.md, "Batches").
