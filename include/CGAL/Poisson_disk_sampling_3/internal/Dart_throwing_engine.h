@@ -225,8 +225,9 @@ public:
     // with the samples accepted: on strips much narrower than D a sample covers far less than
     // pi r^2, and the samples, with the fragments, outnumber `expected` a hundredfold (500 strips
     // 1e-4 wide, 0.01 apart, at D = 0.02: 875,000 samples for 8,000 expected). The triangle model
-    // keeps at most 1.5 times the expected points plus the roots on CGAL's 133 meshes at 100 and 3,000
-    // points; without its cuts of long faces, 33 times on a cylinder of 128 needles.
+    // keeps at most 1.5 times the expected points plus the roots on the triangle meshes of CGAL's data
+    // set at 100 and 3,000 points; without its cuts of long faces, 33 times on a cylinder of 128
+    // needles.
     const double fixed_active = 64 * (double(expected) + double(roots)) + 1048576;
     while(!pool.empty()) {
       if(pool.size() > stats.peak_active) stats.peak_active = pool.size();
