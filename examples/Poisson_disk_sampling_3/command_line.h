@@ -100,16 +100,15 @@ struct Size_options
     namespace P = CGAL::Poisson_disk_sampling_3::parameters;
     const unsigned s = seed ? unsigned(*seed) : 0u;
     const std::size_t m = max_points ? std::size_t(*max_points) : std::size_t(100000000);
+    // the options every size takes
+    auto with_options = [&](const auto& size_np) {
+      return size_np.random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats));
+    };
     const bool use_count = count || (!radius && !minimum_distance &&
                                       !(default_distance > 0 && std::isfinite(default_distance)));
-    if(use_count)
-      sample(P::number_of_points(count ? std::size_t(*count) : default_count)
-                 .random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats)));
-    else if(radius)
-      sample(P::radius(*radius).random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats)));
-    else
-      sample(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)
-                 .random_seed(s).maximum_number_of_points(m).statistics(std::ref(stats)));
+    if(use_count) sample(with_options(P::number_of_points(count ? std::size_t(*count) : default_count)));
+    else if(radius) sample(with_options(P::radius(*radius)));
+    else sample(with_options(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)));
   }
 };
 

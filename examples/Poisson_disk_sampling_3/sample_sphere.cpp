@@ -51,14 +51,18 @@ int main(int argc, char** argv)
         return 0;
       }
       if(size.read(argc, argv, i, seen)) continue;
-      if(a == "--center" || a == "--sphere-radius" || a == "-o") seen.once(a);
       if(a == "--center") {
+        seen.once(a);
         cx = examples::read_number(argc, argv, i); // each call reads the next argument
         cy = examples::read_number(argc, argv, i);
         cz = examples::read_number(argc, argv, i);
-      } else if(a == "--sphere-radius") sphere_radius = examples::read_number(argc, argv, i);
-      else if(a == "-o" && i + 1 < argc) out_file = argv[++i];
-      else throw examples::Usage_error("unknown argument or missing value: " + a);
+      } else if(a == "--sphere-radius") {
+        seen.once(a);
+        sphere_radius = examples::read_number(argc, argv, i);
+      } else if(a == "-o" && i + 1 < argc) {
+        seen.once(a);
+        out_file = argv[++i];
+      } else throw examples::Usage_error("unknown argument or missing value: " + a);
     }
     size.check();
   } catch(const examples::Usage_error& e) {

@@ -84,25 +84,27 @@ struct Times_given<parameters::Named_parameters<T, Tag, Base>, Query>
   : Times_given<CGAL::Named_function_parameters<T, Tag, Base>, Query>
 {};
 
+/// refuses a chain that gives the parameter of tag `Tag`, called `name`, more than once
+template <class NamedParameters, class Tag>
+void check_once(const char* name)
+{
+  if(Times_given<NamedParameters, Tag>::value > 1) throw Invalid_input(std::string(name) + " is given more than once");
+}
+
 /// Refuses a chain that gives one of the parameters the samplers read more than once
 /// (`radius(0.1).radius(0.05)`): CGAL would read one of the two and drop the other unsaid.
 template <class NamedParameters>
 void check_given_once()
 {
-  const int times[] = {Times_given<NamedParameters, internal_np::radius_t>::value,
-                       Times_given<NamedParameters, internal_np::minimum_distance_t>::value,
-                       Times_given<NamedParameters, internal_np::number_of_points_t>::value,
-                       Times_given<NamedParameters, internal_np::maximum_number_of_points_t>::value,
-                       Times_given<NamedParameters, internal_np::statistics_t>::value,
-                       Times_given<NamedParameters, internal_np::concurrency_t>::value,
-                       Times_given<NamedParameters, CGAL::internal_np::random_seed_t>::value,
-                       Times_given<NamedParameters, CGAL::internal_np::vertex_point_t>::value,
-                       Times_given<NamedParameters, CGAL::internal_np::geom_traits_t>::value};
-  const char* const names[] = {"radius",      "minimum_distance", "number_of_points", "maximum_number_of_points",
-                               "statistics",  "concurrency",      "random_seed",      "vertex_point_map",
-                               "geom_traits"};
-  for(int i = 0; i < 9; ++i)
-    if(times[i] > 1) throw Invalid_input(std::string(names[i]) + " is given more than once");
+  check_once<NamedParameters, internal_np::radius_t>("radius");
+  check_once<NamedParameters, internal_np::minimum_distance_t>("minimum_distance");
+  check_once<NamedParameters, internal_np::number_of_points_t>("number_of_points");
+  check_once<NamedParameters, internal_np::maximum_number_of_points_t>("maximum_number_of_points");
+  check_once<NamedParameters, internal_np::statistics_t>("statistics");
+  check_once<NamedParameters, internal_np::concurrency_t>("concurrency");
+  check_once<NamedParameters, CGAL::internal_np::random_seed_t>("random_seed");
+  check_once<NamedParameters, CGAL::internal_np::vertex_point_t>("vertex_point_map");
+  check_once<NamedParameters, CGAL::internal_np::geom_traits_t>("geom_traits");
 }
 
 template <class NamedParameters>

@@ -81,14 +81,17 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
   for(const auto& q : points) p.push_back(to_double_array(q));
   Triangle_fragment_traits_3 traits;
   std::size_t i = 0;
+  // an index as it was given: a negative one is not written as the size_t it converts to
+  auto refuse_index = [&](const auto& v) {
+    throw Invalid_input("polygon " + std::to_string(i) + " refers to point " + std::to_string(v) + " of " +
+                        std::to_string(p.size()));
+  };
   for(const auto& polygon : polygons) {
     std::array<std::size_t, 3> t{};
     std::size_t k = 0;
     for(const auto& v : polygon) {
       if constexpr(std::is_signed<std::decay_t<decltype(v)>>::value) {
-        if(v < 0)
-          throw Invalid_input("polygon " + std::to_string(i) + " refers to point " + std::to_string(v) +
-                              " of " + std::to_string(p.size()));
+        if(v < 0) refuse_index(v);
       }
       if(k < 3) t[k] = std::size_t(v);
       ++k;
@@ -97,9 +100,7 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
       throw Invalid_input("polygon " + std::to_string(i) + " has " + std::to_string(k) +
                           " vertices; only triangles are sampled (see CGAL::Polygon_mesh_processing::triangulate_polygons)");
     for(std::size_t v : t)
-      if(v >= p.size())
-        throw Invalid_input("polygon " + std::to_string(i) + " refers to point " + std::to_string(v) +
-                            " of " + std::to_string(p.size()));
+      if(v >= p.size()) refuse_index(v);
     traits.add_triangle(p[t[0]], p[t[1]], p[t[2]]);
     ++i;
   }
