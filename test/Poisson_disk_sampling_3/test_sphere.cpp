@@ -503,9 +503,10 @@ std::vector<Point> unit_sphere_samples(double d, unsigned seed)
 // The union test where the engine uses it: rectangles of the engine's subdivision (children of the
 // octants, a few levels deep, at all latitudes and at the poles) near the samples of a maximal set,
 // with the samples within 2D of the rectangle as centres and radii of D or a little less. Sound as
-// above, and it must prove a good share (217 of 284, three quarters, with the code of 2026-11-24) of
+// above, and it must prove a good share (198 of 270, three quarters, with the code of 2026-11-25) of
 // the rectangles that a dense evaluation finds covered with a margin but that no single ball covers:
-// these are the darts it saves. The others hold a point where two of the spheres cross, or need four balls or more.
+// these are the darts it saves. The others hold a point where two of the spheres cross, or need four
+// balls or more.
 TEST(SphereFragments, UnionCoverageProvesMostCoveredRectanglesAmongSamples)
 {
   const Traits traits({{0, 0, 0}}, 1);

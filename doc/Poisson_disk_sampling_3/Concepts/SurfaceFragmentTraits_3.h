@@ -22,9 +22,9 @@
 ///   above the largest initial fragment's but by rounding (2^-20 of it): the engine files fragments
 ///   by area relative to that one. A model that breaks one of these gets `Invalid_input`;
 /// - the operations are `const` and may be called at the same time from several threads: with
-///   `concurrency(CGAL::Parallel_tag())`, `area()`, `random_sample()`, `point()`, `is_covered()`,
-///   `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's threads (a model
-///   with scratch space or caches must keep them per thread).
+///   `concurrency(CGAL::Parallel_tag())`, `area()`, `random_sample()`, `point()`, `level()`,
+///   `is_covered()`, `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's
+///   threads (a model with scratch space or caches must keep them per thread).
 ///
 /// A model whose fragments in wait outnumber 64 times its samples so far, its expected points
 /// (area / (pi r^2)) and its initial fragments, plus about a million, gets `Point_limit_exceeded`:

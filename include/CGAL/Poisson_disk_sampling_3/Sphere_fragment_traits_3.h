@@ -215,7 +215,7 @@ public:
   /// cross, so a rectangle that holds a point of that circle (covered there by a third ball) needs a
   /// triple, and a rectangle that only four or more balls cover together is never proven; the engine
   /// then splits it. Near the samples of a maximal set, about a quarter of the covered rectangles that
-  /// no single ball covers are not proven (67 of 284 in test_sphere.cpp,
+  /// no single ball covers are not proven (72 of 270 in test_sphere.cpp,
   /// `UnionCoverageProvesMostCoveredRectanglesAmongSamples`).
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const

@@ -31,8 +31,10 @@ public:
 /// while sampling (thin or scattered surfaces can exceed the estimate). Also thrown, before any piece
 /// is stored, when a model's roots for the distance (the optional `initial_fragments(out, d)` of
 /// `SurfaceFragmentTraits_3`) would outnumber its faces by more than four times that bound plus six
-/// per face, the memory those take; and while sampling, if 2^32 or more fragments of about the same
-/// area would be active at once (only with the bound raised far above its default).
+/// per face, the memory those take; and while sampling, when a model's fragments in wait outnumber
+/// 64 times its samples so far, its expected points and its initial fragments, plus 2^20 (a model
+/// whose coverage tests never succeed: see `SurfaceFragmentTraits_3`), or 2^32 or more fragments of
+/// about the same area would be in wait at once.
 class Point_limit_exceeded : public std::length_error
 {
 public:

@@ -61,12 +61,13 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 /// Certifies that `samples` is maximal on a triangle mesh for the minimum distance d: no point of the
 /// surface is farther than d from every sample, so no sample can be added.
 ///
-/// Each face is split by midpoints until the ball of radius d around one sample holds the three
-/// corners of each piece, with a margin larger than the rounding error of the corners, down to pieces
-/// 2^-48 the size of their face. A `true` answer is a proof. A piece whose centroid, as computed, is
-/// farther than d from every sample by more than twice the rounding of the surface's points
-/// (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that the
-/// exact centroid is farther than d; the computed one is reported as `uncovered_point`. The work and
+/// Each face is split by midpoints (a face much longer than d is first cut into blocks of rows, which
+/// are halved) until the ball of radius d around one sample holds the corners of each piece, with a
+/// margin larger than the rounding error of the corners, down to pieces 2^-48 the size of their face.
+/// A `true` answer is a proof. A piece whose reference point (a triangle's centroid, a block's middle),
+/// as computed, is farther than d from every sample by more than twice the rounding of the surface's
+/// points (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that
+/// the exact point is farther than d; the computed one is reported as `uncovered_point`. The work and
 /// the memory are bounded (10 million pieces in the last phase, 2.5 million waiting at a time): on
 /// slivers far thinner than d, which midpoint subdivision must cut across as often as along, and on
 /// sets maximal with no margin (a point of the surface at distance d from the samples), the answer

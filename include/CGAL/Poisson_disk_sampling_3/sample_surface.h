@@ -346,10 +346,14 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///
 /// \returns the output iterator past the last sample
 /// \throws Invalid_input for a bad size (among which a minimum distance outside 2^-400 to 2^400) or a
-///         surface with no area. Exceptions are thrown before any
-///         sample is written, except `Point_limit_exceeded` raised while sampling (a surface that needs
-///         more samples than its area predicts), after which `out` may have received some samples.
-/// \throws Point_limit_exceeded when the bound is exceeded
+///         surface with no area, before any sample is written; and while sampling, for a model that
+///         breaks the rules of `SurfaceFragmentTraits_3` the engine checks (an area that is not a
+///         number or negative, a fragment larger than the largest initial one, 2^30 refused darts in a
+///         row), after which `out` may have received some samples.
+/// \throws Point_limit_exceeded when the bound is exceeded: before any sample is written for the
+///         estimate, while sampling for the actual count (a surface that needs more samples than its
+///         area predicts) and for a model whose fragments in wait outnumber the bound of
+///         `SurfaceFragmentTraits_3`, after which `out` may have received some samples.
 /// \throws Target_not_reached when `number_of_points` cannot be met
 template <class SurfaceFragmentTraits, class SampleOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>

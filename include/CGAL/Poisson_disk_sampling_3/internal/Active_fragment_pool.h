@@ -71,8 +71,9 @@ public:
       bounds_.push_back(bin_bound(bins_.size()));
       bins_.emplace_back();
     }
-    // a handle holds an index within its bin in 32 bits; the engine's bounds keep a pool far below
-    // this unless maximum_number_of_points is raised beyond a billion
+    // a handle holds an index within its bin in 32 bits; the engine's bound on fragments in wait
+    // (64 times the samples, the expected points and the roots, plus 2^20) keeps a bin below this up to
+    // about 30 million expected points; beyond, only a model that breaks the concept comes near it
     if(bins_[b].size() >= std::numeric_limits<std::uint32_t>::max())
       throw Point_limit_exceeded("2^32 - 1 active fragments of about the same area, the most a bin holds; "
                                  "use a larger distance or fewer points");
