@@ -54,8 +54,9 @@ Triangle_fragment_traits_3
 triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
                   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_of)
 {
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, tm));
   Triangle_fragment_traits_3 traits;
   traits.reserve(std::size_t(num_faces(tm)));
   face_of.clear();
@@ -98,7 +99,9 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
     }
     if(k != 3)
       throw Invalid_input("polygon " + std::to_string(i) + " has " + std::to_string(k) +
-                          " vertices; only triangles are sampled (see CGAL::Polygon_mesh_processing::triangulate_polygons)");
+                          " vertices; only triangles are sampled (make a mesh of the soup with "
+                          "CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh() and triangulate it "
+                          "with triangulate_faces(), or, from CGAL 6.0, use triangulate_polygons())");
     for(std::size_t v : t)
       if(v >= p.size()) refuse_index(v);
     traits.add_triangle(p[t[0]], p[t[1]], p[t[2]]);
