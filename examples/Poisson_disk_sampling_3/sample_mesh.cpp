@@ -6,9 +6,12 @@
 //
 // Samples a triangle mesh (any file CGAL reads: OFF, OBJ, PLY, STL; by default lion.off from CGAL's
 // data set) with a maximal Poisson-disk set, checks the result with the package's exact validation,
-// writes a binary PLY (x y z, nx ny nz, face index) and prints one `key: value` a line.
+// writes a binary PLY (x y z, nx ny nz, face index) and prints one `key: value` a line. A file whose
+// triangles make no valid polygon mesh (faces oriented inconsistently, an edge shared by three
+// faces, ...) is sampled as a polygon soup, with sample_polygon_soup_with_locations().
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Poisson_disk_sampling_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -28,7 +31,7 @@
 namespace PDS = CGAL::Poisson_disk_sampling_3;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-typedef PDS::Triangle_sample<K, Mesh::Face_index> Sample;
+typedef std::vector<std::vector<std::size_t>> Polygons;
 
 namespace {
 
@@ -57,6 +60,7 @@ std::string default_mesh()
   return "lion.off";
 }
 
+template <class Sample>
 void write_ply(const std::string& path, const std::vector<Sample>& samples)
 {
   std::ofstream out(path, std::ios::binary);
@@ -70,6 +74,50 @@ void write_ply(const std::string& path, const std::vector<Sample>& samples)
     out.write(reinterpret_cast<const char*>(&f), sizeof f);
   }
   if(!out) throw std::runtime_error("cannot write " + path);
+}
+
+// Samples with `sample(np, out)`, validates with `is_maximal(points, d)`, writes the PLY and prints the
+// report; returns the program's exit status.
+template <class Sample, class Sampler, class Certifier>
+int sample_and_report(const std::string& mesh_file, const char* kind, std::size_t faces, double area,
+                      const examples::Size_options& size, const std::string& out_file, Sampler sample,
+                      Certifier is_maximal)
+{
+  std::vector<Sample> samples;
+  PDS::Sampling_statistics stats;
+  // with no size: about 10,000 points
+  const double default_distance = std::sqrt(0.6965 * area / 10000);
+  const auto start = std::chrono::steady_clock::now();
+  size.sample_with(default_distance, 10000, stats, [&](const auto& np) { sample(np, std::back_inserter(samples)); });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::vector<K::Point_3> points;
+  for(const Sample& s : samples) points.push_back(s.point);
+  const bool pds = bool(PDS::is_poisson_disk_set(points, stats.minimum_distance));
+  const bool maximal = bool(is_maximal(points, stats.minimum_distance));
+  write_ply(out_file, samples);
+
+  std::cout << "mesh: " << mesh_file << "\n"
+            << "read_as: " << kind << "\n"
+            << "faces: " << faces << "\n"
+            << "points: " << samples.size() << "\n"
+            << "minimum_distance: " << stats.minimum_distance << "\n"
+            << "seconds: " << seconds << "\n"
+            << "points_per_second: " << double(samples.size()) / seconds << "\n"
+            << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
+            << "is_maximal: " << (maximal ? "true" : "false") << "\n"
+            << "output: " << out_file << "\n";
+  return pds && maximal ? 0 : 1;
+}
+
+// the area of a soup's triangles (the sampler refuses other polygons, and says so)
+double soup_area(const std::vector<K::Point_3>& points, const Polygons& polygons)
+{
+  double area = 0;
+  for(const auto& p : polygons)
+    if(p.size() == 3 && p[0] < points.size() && p[1] < points.size() && p[2] < points.size())
+      area += std::sqrt(CGAL::to_double(K::Triangle_3(points[p[0]], points[p[1]], points[p[2]]).squared_area()));
+  return area;
 }
 
 } // namespace
@@ -101,38 +149,29 @@ int main(int argc, char** argv)
   if(mesh_file.empty()) mesh_file = default_mesh();
 
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(mesh_file, mesh)) {
-    std::cerr << "error: cannot read a polygon mesh from " << mesh_file << "\n";
+  std::vector<K::Point_3> soup_points;
+  Polygons soup_polygons;
+  const bool is_mesh = CGAL::IO::read_polygon_mesh(mesh_file, mesh);
+  if(!is_mesh && !CGAL::IO::read_polygon_soup(mesh_file, soup_points, soup_polygons)) {
+    std::cerr << "error: cannot read a polygon mesh or polygon soup from " << mesh_file << "\n";
     return 1;
   }
 
   try {
-    std::vector<Sample> samples;
-    PDS::Sampling_statistics stats;
-    // with no size: about 10,000 points
-    const double default_distance = std::sqrt(0.6965 * CGAL::Polygon_mesh_processing::area(mesh) / 10000);
-    const auto start = std::chrono::steady_clock::now();
-    size.sample_with(default_distance, 10000, stats, [&](const auto& np) {
-      PDS::sample_triangle_mesh_with_locations(mesh, std::back_inserter(samples), np);
-    });
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    std::vector<K::Point_3> points;
-    for(const Sample& s : samples) points.push_back(s.point);
-    const bool pds = bool(PDS::is_poisson_disk_set(points, stats.minimum_distance));
-    const bool maximal = bool(PDS::is_maximal(mesh, points, stats.minimum_distance));
-    write_ply(out_file, samples);
-
-    std::cout << "mesh: " << mesh_file << "\n"
-              << "faces: " << num_faces(mesh) << "\n"
-              << "points: " << samples.size() << "\n"
-              << "minimum_distance: " << stats.minimum_distance << "\n"
-              << "seconds: " << seconds << "\n"
-              << "points_per_second: " << double(samples.size()) / seconds << "\n"
-              << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
-              << "is_maximal: " << (maximal ? "true" : "false") << "\n"
-              << "output: " << out_file << "\n";
-    return pds && maximal ? 0 : 1;
+    if(is_mesh)
+      return sample_and_report<PDS::Triangle_sample<K, Mesh::Face_index>>(
+          mesh_file, "polygon mesh", num_faces(mesh), CGAL::Polygon_mesh_processing::area(mesh), size, out_file,
+          [&](const auto& np, auto out) { PDS::sample_triangle_mesh_with_locations(mesh, out, np); },
+          [&](const std::vector<K::Point_3>& points, double d) { return PDS::is_maximal(mesh, points, d); });
+    return sample_and_report<PDS::Triangle_sample<K, std::size_t>>(
+        mesh_file, "polygon soup (not a valid polygon mesh)", soup_polygons.size(),
+        soup_area(soup_points, soup_polygons), size, out_file,
+        [&](const auto& np, auto out) {
+          PDS::sample_polygon_soup_with_locations(soup_points, soup_polygons, out, np);
+        },
+        [&](const std::vector<K::Point_3>& points, double d) {
+          return PDS::is_maximal_on_polygon_soup(soup_points, soup_polygons, points, d);
+        });
   } catch(const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
