@@ -8,12 +8,15 @@
 // data set) with a maximal Poisson-disk set, checks the result with the package's exact validation,
 // writes a binary PLY (x y z, nx ny nz, face index) and prints one `key: value` a line. A file whose
 // triangles make no valid polygon mesh (faces oriented inconsistently, an edge shared by three
-// faces, ...) is sampled as a polygon soup, with sample_polygon_soup_with_locations().
+// faces, ...) is sampled as a polygon soup, with sample_polygon_soup_with_locations(). A mesh's faces
+// that are not triangles are triangulated first (CGAL::Polygon_mesh_processing::triangulate_faces(),
+// the library samples triangles only); the face indices written are then the triangulated mesh's.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Poisson_disk_sampling_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -158,9 +161,20 @@ int main(int argc, char** argv)
   }
 
   try {
+    std::size_t not_triangles = 0;
+    for(Mesh::Face_index f : faces(mesh)) not_triangles += (degree(f, mesh) != 3);
+    if(not_triangles > 0 && !CGAL::Polygon_mesh_processing::triangulate_faces(mesh)) {
+      std::cerr << "error: " << not_triangles << " faces of " << mesh_file << " are not triangles, and "
+                << "CGAL::Polygon_mesh_processing::triangulate_faces() could not triangulate them all\n";
+      return 1;
+    }
+    const std::string mesh_kind = not_triangles == 0 ? std::string("polygon mesh")
+                                  : "polygon mesh, " + std::to_string(not_triangles) +
+                                        (not_triangles == 1 ? " face" : " faces") +
+                                        " triangulated (face indices are the triangulated mesh's)";
     if(is_mesh)
       return sample_and_report<PDS::Triangle_sample<K, Mesh::Face_index>>(
-          mesh_file, "polygon mesh", num_faces(mesh), CGAL::Polygon_mesh_processing::area(mesh), size, out_file,
+          mesh_file, mesh_kind.c_str(), num_faces(mesh), CGAL::Polygon_mesh_processing::area(mesh), size, out_file,
           [&](const auto& np, auto out) { PDS::sample_triangle_mesh_with_locations(mesh, out, np); },
           [&](const std::vector<K::Point_3>& points, double d) { return PDS::is_maximal(mesh, points, d); });
     return sample_and_report<PDS::Triangle_sample<K, std::size_t>>(
