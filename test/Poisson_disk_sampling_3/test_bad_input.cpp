@@ -218,12 +218,28 @@ TEST(BadInput, DistancesOutsideTheHandledRange)
     Mesh m;
     m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(s, 0, 0)), m.add_vertex(Point(0, s, 0)));
     EXPECT_THROW(sample(m, PDS::parameters::minimum_distance(0.1 * s)), PDS::Invalid_input) << e;
+    // the distance the count needs is named as such, not as a distance given (nor, where the first
+    // estimate underflowed to 0, as a distance that is not positive)
+    for(std::size_t n : {std::size_t(50), std::size_t(1)}) {
+      const std::string what =
+          what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::number_of_points(n)); });
+      EXPECT_NE(what.find("about " + std::to_string(n) + " points on a surface of area"), std::string::npos)
+          << e << ": " << what;
+      EXPECT_NE(what.find("scale the input"), std::string::npos) << e << ": " << what;
+    }
     EXPECT_THROW(PDS::is_maximal(m, std::vector<Point>{Point(0, 0, 0)}, 0.1 * s), PDS::Invalid_input) << e;
     std::vector<Point> out;
     EXPECT_THROW(PDS::sample_sphere(K::Sphere_3(Point(0, 0, 0), s * s), std::back_inserter(out),
                                     PDS::parameters::minimum_distance(0.3 * s)),
                  PDS::Invalid_input)
         << e;
+  }
+  {
+    Mesh m;
+    m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1e-200, 0, 0)), m.add_vertex(Point(0, 1e-200, 0)));
+    const std::string what =
+        what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::number_of_points(10000)); });
+    EXPECT_NE(what.find("scale the input"), std::string::npos) << what;
   }
   // the area of a triangle is the length of a cross product, whose square underflows (2^-1200) or
   // overflows (2^1200) here
