@@ -6,19 +6,21 @@
 //
 // Samples a triangle mesh (any file CGAL reads: OFF, OBJ, PLY, STL; by default lion.off from CGAL's
 // data set) with a maximal Poisson-disk set, checks the result with the package's exact validation,
-// writes a binary PLY (x y z, nx ny nz, face index) and prints one `key: value` a line. A file whose
-// triangles make no valid polygon mesh (faces oriented inconsistently, an edge shared by three
-// faces, ...) is sampled as a polygon soup, with sample_polygon_soup_with_locations(). A mesh's faces
-// that are not triangles are triangulated first (CGAL::Polygon_mesh_processing::triangulate_faces(),
-// the library samples triangles only); the face indices written are then the triangulated mesh's.
+// writes a binary PLY (x y z, nx ny nz, face index) and prints one `key: value` a line. The file is
+// read as a polygon soup and made into a Surface_mesh where its polygons make a valid one; a mesh's
+// faces that are not triangles are triangulated first (CGAL::Polygon_mesh_processing::
+// triangulate_faces(): the library samples triangles only), and the face indices written are then
+// the triangulated mesh's. Triangles that make no valid polygon mesh (faces oriented
+// inconsistently, an edge shared by three faces, ...) are sampled as a polygon soup, with
+// sample_polygon_soup_with_locations().
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Poisson_disk_sampling_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include "command_line.h"
 
@@ -28,6 +30,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -113,13 +116,12 @@ int sample_and_report(const std::string& mesh_file, const char* kind, std::size_
   return pds && maximal ? 0 : 1;
 }
 
-// the area of a soup's triangles (the sampler refuses other polygons, and says so)
+// the area of a soup of triangles whose indices are checked
 double soup_area(const std::vector<K::Point_3>& points, const Polygons& polygons)
 {
   double area = 0;
   for(const auto& p : polygons)
-    if(p.size() == 3 && p[0] < points.size() && p[1] < points.size() && p[2] < points.size())
-      area += std::sqrt(CGAL::to_double(K::Triangle_3(points[p[0]], points[p[1]], points[p[2]]).squared_area()));
+    area += std::sqrt(CGAL::to_double(K::Triangle_3(points[p[0]], points[p[1]], points[p[2]]).squared_area()));
   return area;
 }
 
@@ -151,32 +153,53 @@ int main(int argc, char** argv)
   }
   if(mesh_file.empty()) mesh_file = default_mesh();
 
-  Mesh mesh;
-  std::vector<K::Point_3> soup_points;
-  Polygons soup_polygons;
-  const bool is_mesh = CGAL::IO::read_polygon_mesh(mesh_file, mesh);
-  if(!is_mesh && !CGAL::IO::read_polygon_soup(mesh_file, soup_points, soup_polygons)) {
-    std::cerr << "error: cannot read a polygon mesh or polygon soup from " << mesh_file << "\n";
-    return 1;
-  }
-
   try {
-    std::size_t not_triangles = 0;
-    for(Mesh::Face_index f : faces(mesh)) not_triangles += (degree(f, mesh) != 3);
-    if(not_triangles > 0 && !CGAL::Polygon_mesh_processing::triangulate_faces(mesh)) {
-      std::cerr << "error: " << not_triangles << " faces of " << mesh_file << " are not triangles, and "
-                << "CGAL::Polygon_mesh_processing::triangulate_faces() could not triangulate them all\n";
+    // The file's polygons, read once, checked, then made into a mesh where they make a valid one.
+    std::vector<K::Point_3> soup_points;
+    Polygons soup_polygons;
+    if(!CGAL::IO::read_polygon_soup(mesh_file, soup_points, soup_polygons)) {
+      std::cerr << "error: cannot read a polygon mesh or polygon soup from " << mesh_file << "\n";
       return 1;
     }
-    const std::string mesh_kind = not_triangles == 0 ? std::string("polygon mesh")
-                                  : "polygon mesh, " + std::to_string(not_triangles) +
-                                        (not_triangles == 1 ? " face" : " faces") +
-                                        " triangulated (face indices are the triangulated mesh's)";
-    if(is_mesh)
+    std::size_t not_triangles = 0;
+    for(std::size_t i = 0; i < soup_polygons.size(); ++i) {
+      not_triangles += (soup_polygons[i].size() != 3);
+      for(std::size_t v : soup_polygons[i])
+        if(v >= soup_points.size()) {
+          std::cerr << "error: polygon " << i << " of " << mesh_file << " refers to point " << v << ", of "
+                    << soup_points.size() << " points\n";
+          return 1;
+        }
+    }
+    const auto faces_text = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " face" : " faces"); };
+    const std::string not_triangles_text = faces_text(not_triangles) + " of " + mesh_file +
+                                           (not_triangles == 1 ? " is not a triangle" : " are not triangles");
+
+    if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_polygons)) {
+      Mesh mesh;
+      CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_polygons, mesh);
+      soup_points = {};
+      soup_polygons = {};
+      if(not_triangles > 0 && !CGAL::Polygon_mesh_processing::triangulate_faces(mesh)) {
+        std::cerr << "error: " << not_triangles_text << ", and CGAL::Polygon_mesh_processing::triangulate_faces() "
+                  << "failed (a degenerate or self-intersecting face?); the library samples triangles only\n";
+        return 1;
+      }
+      const std::string kind = not_triangles == 0 ? std::string("polygon mesh")
+                               : "polygon mesh, " + faces_text(not_triangles) +
+                                     " triangulated (face indices are the triangulated mesh's)";
       return sample_and_report<PDS::Triangle_sample<K, Mesh::Face_index>>(
-          mesh_file, mesh_kind.c_str(), num_faces(mesh), CGAL::Polygon_mesh_processing::area(mesh), size, out_file,
+          mesh_file, kind.c_str(), num_faces(mesh), CGAL::Polygon_mesh_processing::area(mesh), size, out_file,
           [&](const auto& np, auto out) { PDS::sample_triangle_mesh_with_locations(mesh, out, np); },
           [&](const std::vector<K::Point_3>& points, double d) { return PDS::is_maximal(mesh, points, d); });
+    }
+    if(not_triangles > 0) {
+      std::cerr << "error: " << not_triangles_text << ", and the file's "
+                << "polygons make no valid polygon mesh (faces oriented inconsistently, an edge shared by three "
+                   "faces, a polygon that repeats a vertex), so this program cannot triangulate them; the "
+                   "library samples triangles only\n";
+      return 1;
+    }
     return sample_and_report<PDS::Triangle_sample<K, std::size_t>>(
         mesh_file, "polygon soup (not a valid polygon mesh)", soup_polygons.size(),
         soup_area(soup_points, soup_polygons), size, out_file,
@@ -186,6 +209,9 @@ int main(int argc, char** argv)
         [&](const std::vector<K::Point_3>& points, double d) {
           return PDS::is_maximal_on_polygon_soup(soup_points, soup_polygons, points, d);
         });
+  } catch(const std::bad_alloc&) {
+    std::cerr << "error: out of memory reading or sampling " << mesh_file << "\n";
+    return 1;
   } catch(const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
