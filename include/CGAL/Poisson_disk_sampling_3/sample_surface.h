@@ -208,13 +208,10 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   check_surface_area(area, "sample");
   const double tolerance = (std::max)(1., 0.01 * double(n));
   double d = std::sqrt(0.6965 * area / double(n));
-  // the engine would name the distance as if the user had given it (or, where it underflows to 0,
-  // call it not positive)
-  if(!(d >= smallest_minimum_distance && d <= largest_minimum_distance))
-    throw Invalid_input("about " + std::to_string(n) + " points on a surface of area " + number_text(area) +
-                        " need a minimum distance of about " + number_text(d) +
-                        ", outside the range 2^-400 to 2^400 (about 3.9e-121 to 2.6e120) that the package "
-                        "handles; scale the input");
+  // checked here: the engine would name the distance as if the user had given it (or, where it
+  // underflows to 0, call it not positive)
+  check_distance_range(d, "about " + std::to_string(n) + " points on a surface of area " + number_text(area) +
+                              " need a minimum distance of about " + number_text(d) + ", which");
   double slope = -2, last_d = 0, last_n = 0;
   const double infinity = std::numeric_limits<double>::infinity();
   double too_many = 0, too_few = infinity;

@@ -24,11 +24,12 @@ namespace internal {
 constexpr double smallest_minimum_distance = 0x1.0p-400;
 constexpr double largest_minimum_distance = 0x1.0p+400;
 
-/// throws `Invalid_input` unless `d` is in [smallest_minimum_distance, largest_minimum_distance]
-inline void check_distance_range(double d)
+/// throws `Invalid_input` unless `d` is in [smallest_minimum_distance, largest_minimum_distance]; the
+/// message names `d` by `what` where given (a distance the package chose, not one the user gave)
+inline void check_distance_range(double d, const std::string& what = std::string())
 {
   if(!(d >= smallest_minimum_distance && d <= largest_minimum_distance))
-    throw Invalid_input("the minimum distance " + number_text(d) +
+    throw Invalid_input((what.empty() ? "the minimum distance " + number_text(d) : what) +
                         " is outside the range 2^-400 to 2^400 (about 3.9e-121 to 2.6e120) that the package "
                         "handles; scale the input");
 }
