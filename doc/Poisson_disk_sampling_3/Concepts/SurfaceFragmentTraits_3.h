@@ -10,27 +10,51 @@
 /// points as `std::array<double, 3>`; exactness is obtained from conservative coverage tests and exact
 /// distance decisions, see the design page.
 ///
+/// The coverage tests receive the minimum distance D as `radius`: a sample covers the points within
+/// D of it (D is twice the named parameter `radius` of the samplers, r = D / 2).
+///
 /// Requirements the engine relies on:
 /// - the initial fragments tile the surface, and the children of a fragment tile it;
 /// - `random_sample()` is uniform with respect to area on the fragment (or, for models that sample
 ///   with rejection, uniform once accepted, and accepted with positive probability: a model that
 ///   refuses 2^30 darts in a row gets `Invalid_input`);
 /// - `is_covered()` is conservative: it returns `true` only if every point of the fragment is within
-///   `radius` of `center`, rounding included;
+///   `radius` of `center`, rounding included; and conservative by no more than its rounding error,
+///   or by a margin that shrinks with the fragment. A fixed margin m leaves the points whose nearest
+///   sample is between D - m and D away unproven for good: no dart is accepted there (they are within
+///   D of a sample) and no fragment there is ever proven covered, so the fragments there multiply
+///   four times a level down to the depth floor, and the engine stops with `Point_limit_exceeded`. (A
+///   model of a unit square whose test shrank D by 10^-6 of it was stopped so at 175,000 points, and
+///   sampled them with 10^-8: the larger the sample, the more such places there are.);
 /// - splitting shrinks fragments, so that a fragment smaller than a ball's margin is covered by it;
-/// - areas are numbers, not negative (a fragment of area 0 is skipped), and no fragment's area is
-///   above the largest initial fragment's but by rounding (2^-20 of it): the engine files fragments
-///   by area relative to that one. A model that breaks one of these gets `Invalid_input`;
+/// - areas are numbers, not negative (a fragment of area 0 is skipped: it must hold no part of the
+///   surface of positive area, or that part is never sampled), no fragment's area is above the
+///   largest initial fragment's but by rounding (2^-20 of it), and `area()` gives the same double for
+///   the same fragment on every call: the engine files fragments by area relative to the largest
+///   initial one, and draws them in proportion to the bounds of the range they were filed in;
 /// - the operations are `const` and may be called at the same time from several threads: with
 ///   `concurrency(CGAL::Parallel_tag())`, `area()`, `random_sample()`, `point()`, `level()`,
 ///   `is_covered()`, `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's
 ///   threads (a model with scratch space or caches must keep them per thread).
 ///
-/// A model whose fragments in wait outnumber 64 times its samples so far, its expected points
+/// What the engine checks: a model that gives an area that is not a number, or negative, or above the
+/// largest initial fragment's beyond rounding, or a fragment's area outside the power-of-two range it
+/// had when the fragment was stored, or that refuses 2^30 darts in a row, gets `Invalid_input`. A
+/// model whose fragments in wait outnumber 64 times its samples so far, its expected points
 /// (area / (pi r^2)) and its initial fragments, plus about a million, gets `Point_limit_exceeded`:
-/// its coverage tests may never succeed, or its samples may lie off their fragments. (The triangle
-/// model keeps fewer than twice the expected points and the initial fragments on CGAL's meshes;
-/// without its cuts of long thin faces, 33 times on a cylinder of 128 needles.)
+/// coverage tests that never succeed, or succeed only with a fixed margin, or samples far off the
+/// surface leave places that are never covered, and the fragments there multiply. (The triangle model
+/// keeps fewer than twice the expected points and the initial fragments on CGAL's meshes; without its
+/// cuts of long thin faces, 33 times on a cylinder of 128 needles.)
+///
+/// What it does not check: that the fragments tile the surface, that the samples are uniform and on
+/// their fragments (a sample placed in a neighbouring fragment, or just past the surface's border,
+/// passes), that a coverage test that says `true` is right, that `refine()` keeps every uncovered
+/// point. A model wrong in these ways gives a set that may not be a Poisson-disk set or not maximal,
+/// without an error. `is_poisson_disk_set()` checks the distances of any set of points;
+/// `is_maximal_on_surface()` certifies maximality with the model's own `initial_fragments()`,
+/// `split()`, `is_covered()` and `reference_point()`, none of the sampler's union tests or `refine()`:
+/// it catches a wrong union test or `refine()`, not a wrong split or single-ball test.
 ///
 /// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Triangle_fragment_traits_3`
 /// \cgalHasModel `CGAL::Poisson_disk_sampling_3::Sphere_fragment_traits_3`
@@ -68,8 +92,9 @@ public:
   /// the area of a fragment, or an upper bound of it for models that sample with rejection; the engine
   /// chooses fragments in proportion to it (requirement 2). It must return the same double for the
   /// same fragment on every call, wherever the compiler inlines it: the engine files a fragment by
-  /// its area when it is pushed and checks it when it is drawn. (A difference of two products may
-  /// round differently where the compiler fuses a product and a sum into one instruction, FMA.)
+  /// its area when it is pushed, and refuses it (`Invalid_input`) when it is drawn with an area
+  /// outside the power-of-two range it was filed in. (A difference of two products may round
+  /// differently where the compiler fuses a product and a sum into one instruction, FMA.)
   double area(const Fragment& f) const;
 
   /// a point uniformly distributed on `f`, or an empty optional if a rejection step refuses the dart,
@@ -81,7 +106,9 @@ public:
   /// the point of a sample
   const std::array<double, 3>& point(const Sample& s) const;
 
-  /// true only if every point of `f` is within `radius` of `center` (requirement 4); conservative
+  /// true only if every point of `f` is within `radius` of `center` (requirement 4); conservative, by
+  /// no more than rounding or a margin that shrinks with `f` (see above). `radius` is the minimum
+  /// distance D.
   bool is_covered(const Fragment& f, const std::array<double, 3>& center, double radius) const;
 
   /// Optional. True only if every point of `f` is within `radius` of some point of `centers` (a range
@@ -91,10 +118,11 @@ public:
   /// engine calls it, with the samples within 2 `radius` of the dart, on children that no single ball
   /// covers, and on a fragment at the depth floor that no single ball covers; a model that does not
   /// define it gets single-ball tests only. `Triangle_fragment_traits_3` and
-  /// `Sphere_fragment_traits_3` define it. Its margin must be larger than `is_covered()`'s:
-  /// the certificate (`is_maximal()`) proves coverage with single balls, on pieces small enough that
-  /// one ball holds each with its margin, which is possible only where the union test left at least
-  /// that much room. Margins relative to the fragment, not to the origin, keep both small everywhere.
+  /// `Sphere_fragment_traits_3` define it. Its margin must be larger than `is_covered()`'s: the
+  /// certificate (`is_maximal_on_surface()`) proves coverage with single balls, on pieces small enough
+  /// that one ball holds each with its margin, which is possible only where the union test left at
+  /// least that much room. Margins relative to the fragment, not to the origin, keep both small
+  /// everywhere.
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const;
 
@@ -134,7 +162,8 @@ public:
   template <class OutputIterator>
   OutputIterator split(const Fragment& f, OutputIterator children) const;
 
-  /// a point of the surface in `f`, used by the maximality certificate to find the samples near `f`
+  /// a point of the surface in `f`, used by the maximality certificate (`is_maximal_on_surface()`) to
+  /// find the samples near `f`, and reported by it as the place of a gap
   std::array<double, 3> reference_point(const Fragment& f) const;
 
   /// a bound on the distance between a computed point of the surface and the exact one; the engine

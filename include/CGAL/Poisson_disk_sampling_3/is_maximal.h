@@ -9,6 +9,7 @@
 #include <CGAL/Poisson_disk_sampling_3/sample_sphere.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_triangle_mesh.h>
 
+#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -89,6 +90,7 @@ template <class TriangleMesh, class PointRange, class NamedParameters = CGAL::pa
 auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimum_distance,
            const NamedParameters& np = CGAL::parameters::default_values())
 {
+  internal::check_given_once<NamedParameters>();
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
   return internal::check_maximal<typename GT::Point_3>(internal::triangles_of_mesh(tm, np, face_of), samples,
@@ -136,6 +138,33 @@ Maximality_check<typename K::Point_3> is_maximal(const CGAL::Sphere_3<K>& sphere
                                                  double minimum_distance)
 {
   return internal::check_maximal<typename K::Point_3>(internal::sphere_traits(sphere), samples, minimum_distance);
+}
+
+/// \ingroup PkgPoissonDiskSampling3Ref
+/// Certifies that `samples` is maximal on the surface of any model of `SurfaceFragmentTraits_3`, as
+/// `is_maximal()` does for meshes: the model's initial fragments (for the distance, where the model
+/// defines `initial_fragments(out, d)`) are split with its `split()` until its `is_covered()` proves
+/// one sample's ball holds each piece, down to depth 48 (`level()` where the model defines it), with
+/// the same bounds on work and memory. The model's `reference_point()` finds the samples near a piece
+/// and stands for the gaps proven. The certificate uses none of the sampler's union tests and
+/// `refine()`, so it checks them; but it relies on the model's `split()` tiling each fragment and its
+/// `is_covered()` being conservative: a `true` answer is a proof on the surface that they describe.
+/// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
+/// @tparam PointRange a range of `Point_3` of any CGAL kernel
+///
+/// @param traits the surface
+/// @param samples the samples to certify, for instance the points of the samples of `sample_surface()`
+/// @param minimum_distance the distance d = 2r they were sampled for
+///
+/// \returns `Maximality_check<Point_3>`, with the value type of `PointRange`
+/// \throws Invalid_input for a distance that `sample_surface()` refuses for the model, a surface with
+/// no area, and samples that `is_poisson_disk_set()` refuses
+template <class SurfaceFragmentTraits, class PointRange>
+Maximality_check<typename std::iterator_traits<typename PointRange::const_iterator>::value_type>
+is_maximal_on_surface(const SurfaceFragmentTraits& traits, const PointRange& samples, double minimum_distance)
+{
+  typedef typename std::iterator_traits<typename PointRange::const_iterator>::value_type Point;
+  return internal::check_maximal<Point>(traits, samples, minimum_distance);
 }
 
 } // namespace Poisson_disk_sampling_3

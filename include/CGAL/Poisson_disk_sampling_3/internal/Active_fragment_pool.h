@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -110,11 +111,30 @@ public:
     return Handle{std::uint32_t(b), std::uint32_t(rng.uniform_index(bins_[b].size()))};
   }
 
+  /// whether `area` falls in the bin of `h`, as the area a fragment was pushed with does: two
+  /// comparisons where the bin's bounds are normal doubles (their halves are exact)
+  bool is_filed_with(const Handle& h, double area) const
+  {
+    if(int(h.bin) + 1 < normal_bins_) {
+      const double bound = bounds_[h.bin];
+      return area > 0.5 * bound && (h.bin == 0 || area <= bound);
+    }
+    return area > 0 && bin_of(area) == h.bin;
+  }
+
+  /// the bounds (lower, upper] of the areas in the bin of `h`; infinity above bin 0, where the areas
+  /// above the largest one given to the constructor are filed
+  std::pair<double, double> bin_range(const Handle& h) const
+  {
+    const double upper = h.bin == 0 ? std::numeric_limits<double>::infinity() : bin_bound(h.bin);
+    return {bin_bound(std::size_t(h.bin) + 1), upper};
+  }
+
   /// the rejection step of a draw: true with probability area / bin bound, for `u` uniform in [0, 1);
   /// `area` must be the area the fragment was pushed with
   bool accepts(const Handle& h, double area, double u) const
   {
-    CGAL_precondition(bin_of(area) == h.bin);
+    CGAL_precondition(is_filed_with(h, area));
     if(int(h.bin) < normal_bins_) return u * bounds_[h.bin] < area;
     // a bound below the normal doubles is rounded: compare both sides scaled up by the same power of
     // two, exactly (the bin is at least max_exponent_ + 1023, so the area is scaled up)

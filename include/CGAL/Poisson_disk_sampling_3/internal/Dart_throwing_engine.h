@@ -100,6 +100,7 @@ struct Engine_statistics
   std::size_t dropped_at_max_depth = 0; // uncovered fragments dropped at the depth floor
   std::size_t darts_on_covered = 0;     // rejected darts whose fragment proved entirely covered
   std::size_t peak_active = 0;          // the most fragments in the pool at the start of a batch
+  bool stopped = false;                 // the run stopped at the sample limit of set_sample_stop()
   std::array<double, number_of_stages> stage_seconds{}; // see Stage_clock: zeros unless it is on
 };
 
@@ -147,11 +148,16 @@ public:
   void set_parallel(bool parallel) { parallel_ = parallel; }
 
   /// How many draws in a row may pass without a dart thrown before `run()` gives up on the model
-  /// (by default 2^30: 13 to 21 s of draws, with 10,000 fragments or one, measured with a model that
+  /// (by default 2^30: 13 to 22 s of draws, with 10,000 fragments or one, measured with a model that
   /// refuses everything): a model whose `random_sample()` refuses every dart would otherwise never
   /// end. The pool's own rejection step passes at least half of its draws, so only a model that
   /// refuses almost everything reaches the limit.
   void set_refusal_limit(std::uint64_t draws) { refusal_limit_ = draws; }
+
+  /// Makes `run()` return, with `stopped` set in its statistics, instead of accepting a sample beyond
+  /// the first `samples` (by default, never): the samples written are then not a maximal set. A count
+  /// search uses it to cut short a run that makes far more samples than it looks for.
+  void set_sample_stop(std::size_t samples) { sample_stop_ = samples; }
 
   /// Throws darts until the surface is covered; calls `output(sample)` for each accepted sample.
   template <class SampleOutput>
@@ -273,7 +279,9 @@ public:
           Dart& d = darts[k];
           // the pool's rejection step: a refused draw is no dart; nor is a dart that a rejection step in
           // the model refuses
-          if(!pool.accepts(d.handle, traits_.area(d.item.fragment), d.u)) continue;
+          const double area = traits_.area(d.item.fragment);
+          if(!pool.is_filed_with(d.handle, area)) refuse_changed_area(area, pool.bin_range(d.handle));
+          if(!pool.accepts(d.handle, area, d.u)) continue;
           Stream stream(d.stream);
           d.sample = traits_.random_sample(d.item.fragment, stream);
           if(!d.sample) continue;
@@ -325,6 +333,10 @@ public:
         if(!d.thrown || !d.free) continue;
         d.batch_coverer = first_conflict(accepted, d.point);
         if(d.batch_coverer != none) continue;
+        if(buckets.size() + accepted.size() >= sample_stop_) {
+          stats.stopped = true;
+          return stats;
+        }
         if(buckets.size() + accepted.size() >= max_points_)
           throw Point_limit_exceeded("more than maximum_number_of_points (" + std::to_string(max_points_) +
                                      ") samples; use a larger radius or raise the bound");
@@ -569,6 +581,17 @@ private:
     return a;
   }
 
+  // A fragment is filed by its area when it is pushed, and drawn in proportion to the bounds of its
+  // bin: an area that has left them since would be drawn as often as one it no longer is.
+  [[noreturn]] void refuse_changed_area(double area, std::pair<double, double> range) const
+  {
+    const std::string upper = std::isinf(range.second) ? "inf)" : number_text(range.second) + "]";
+    throw Invalid_input("the surface model gave a fragment of area " + number_text(area) +
+                        " when it was drawn, outside the range (" + number_text(range.first) + ", " + upper +
+                        " of the area it gave when the fragment was stored: area() must return the same "
+                        "double for the same fragment on every call");
+  }
+
   // checked_area(), and at most the largest root's area (up to rounding): see run()
   double checked_child_area(const Fragment& f) const
   {
@@ -606,6 +629,7 @@ private:
   bool check_expected_count_ = true;
   double max_child_area_ = 0; // set by run()
   std::uint64_t refusal_limit_ = std::uint64_t(1) << 30;
+  std::size_t sample_stop_ = std::size_t(-1);
 };
 
 } // namespace internal
