@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -28,10 +29,11 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// the number in argv[i + 1], after option argv[i]; advances i
-inline double read_number(int argc, char** argv, int& i)
+/// the number in argv[i + 1], after argv[i]; advances i. Errors name `option`, by default argv[i] (an
+/// option that takes several numbers passes its own name for the numbers after the first)
+inline double read_number(int argc, char** argv, int& i, std::string option = std::string())
 {
-  const std::string option = argv[i];
+  if(option.empty()) option = argv[i];
   if(i + 1 >= argc) throw Usage_error("missing number after " + option);
   char* end = nullptr;
   const char* text = argv[++i];
@@ -111,6 +113,19 @@ struct Size_options
     else sample(with_options(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)));
   }
 };
+
+/// the answer of `is_maximal()` for the report: true, false with the place of a gap, or undecided (a
+/// set maximal with no margin, or the certificate's bounds on its work reached: user manual, Validation)
+template <class Maximality_check>
+std::string maximality_text(const Maximality_check& check)
+{
+  if(check) return "true";
+  if(!check.uncovered_point) return "undecided";
+  const auto& p = *check.uncovered_point;
+  std::ostringstream text;
+  text << "false (one more sample fits at " << p.x() << " " << p.y() << " " << p.z() << ")";
+  return text.str();
+}
 
 } // namespace examples
 

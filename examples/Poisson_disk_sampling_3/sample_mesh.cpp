@@ -100,7 +100,7 @@ int sample_and_report(const std::string& mesh_file, const char* kind, std::size_
   std::vector<K::Point_3> points;
   for(const Sample& s : samples) points.push_back(s.point);
   const bool pds = bool(PDS::is_poisson_disk_set(points, stats.minimum_distance));
-  const bool maximal = bool(is_maximal(points, stats.minimum_distance));
+  const auto maximal = is_maximal(points, stats.minimum_distance);
   write_ply(out_file, samples);
 
   std::cout << "mesh: " << mesh_file << "\n"
@@ -111,9 +111,9 @@ int sample_and_report(const std::string& mesh_file, const char* kind, std::size_
             << "seconds: " << seconds << "\n"
             << "points_per_second: " << double(samples.size()) / seconds << "\n"
             << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
-            << "is_maximal: " << (maximal ? "true" : "false") << "\n"
+            << "is_maximal: " << examples::maximality_text(maximal) << "\n"
             << "output: " << out_file << "\n";
-  return pds && maximal ? 0 : 1;
+  return pds && bool(maximal) ? 0 : 1;
 }
 
 // the area of a soup of triangles whose indices are checked

@@ -53,9 +53,9 @@ int main(int argc, char** argv)
       if(size.read(argc, argv, i, seen)) continue;
       if(a == "--center") {
         seen.once(a);
-        cx = examples::read_number(argc, argv, i); // each call reads the next argument
-        cy = examples::read_number(argc, argv, i);
-        cz = examples::read_number(argc, argv, i);
+        cx = examples::read_number(argc, argv, i, a); // each call reads the next argument
+        cy = examples::read_number(argc, argv, i, a);
+        cz = examples::read_number(argc, argv, i, a);
       } else if(a == "--sphere-radius") {
         seen.once(a);
         sphere_radius = examples::read_number(argc, argv, i);
@@ -84,7 +84,7 @@ int main(int argc, char** argv)
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool pds = bool(PDS::is_poisson_disk_set(points, stats.minimum_distance));
-    const bool maximal = bool(PDS::is_maximal(sphere, points, stats.minimum_distance));
+    const auto maximal = PDS::is_maximal(sphere, points, stats.minimum_distance);
 
     std::ofstream out(out_file, std::ios::binary);
     out << "ply\nformat binary_little_endian 1.0\nelement vertex " << points.size()
@@ -102,9 +102,9 @@ int main(int argc, char** argv)
               << "seconds: " << seconds << "\n"
               << "points_per_second: " << double(points.size()) / seconds << "\n"
               << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
-              << "is_maximal: " << (maximal ? "true" : "false") << "\n"
+              << "is_maximal: " << examples::maximality_text(maximal) << "\n"
               << "output: " << out_file << "\n";
-    return pds && maximal ? 0 : 1;
+    return pds && bool(maximal) ? 0 : 1;
   } catch(const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

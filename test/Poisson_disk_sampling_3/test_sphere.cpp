@@ -99,6 +99,49 @@ TEST(SphereSampling, NumberOfPoints)
   expect_maximal_poisson_disk_set(sphere, points, stats.minimum_distance);
 }
 
+// From d = 2R up, one point covers the sphere, but its antipode is 2R away: from 2R to about 2R (1 +
+// 5 10^-14) within the rounding of the coverage tests, where the engine refined the cap around it to
+// its depth floor and stopped with Point_limit_exceeded (30 seeds of 30 at the double above 2R, 1 of
+// 30 at 2R), and far above, where the tests overflowed (d / R above about 10^322). One point, on the
+// sphere, from the seed, certified where d leaves a margin. Just below 2R, two points.
+TEST(SphereSampling, DiameterAndBeyondGiveOnePoint)
+{
+  const double above = std::nextafter(2., 3.);
+  for(const Case& c : {Case{{0, 0, 0}, 1, 2, 2}, Case{{0, 0, 0}, 1, above, 0}, Case{{1, -2, 3}, 3, 6 * (1 + 3e-14), 0},
+                       Case{{0, 0, 0}, 1, 2 * (1 + 1e-12), 0}, Case{{0, 0, 0}, 1, 1e100, 0},
+                       Case{{0, 0, 0}, 1e-100, 1e113, 0}}) {
+    const K::Sphere_3 sphere(c.center, c.radius * c.radius);
+    for(unsigned seed : {0u, 1u, 2u}) {
+      std::vector<Point> points, again;
+      PDS::Sampling_statistics stats;
+      PDS::sample_sphere(sphere, std::back_inserter(points),
+                         PDS::parameters::minimum_distance(c.d).random_seed(seed).statistics(std::ref(stats)));
+      ASSERT_EQ(points.size(), 1u) << c.d << " " << seed;
+      EXPECT_NEAR(std::sqrt(CGAL::squared_distance(points[0], c.center)), c.radius, 1e-15 * c.radius);
+      EXPECT_EQ(stats.minimum_distance, c.d);
+      PDS::sample_sphere(sphere, std::back_inserter(again), PDS::parameters::minimum_distance(c.d).random_seed(seed));
+      EXPECT_EQ(again, points);
+      if(c.d >= 2 * c.radius * (1 + 1e-12) && c.d < 1e10 * c.radius) EXPECT_TRUE(PDS::is_maximal(sphere, points, c.d));
+    }
+  }
+  // another seed, another point
+  const K::Sphere_3 unit(CGAL::ORIGIN, 1);
+  std::vector<Point> a, b;
+  PDS::sample_sphere(unit, std::back_inserter(a), PDS::parameters::minimum_distance(2).random_seed(0));
+  PDS::sample_sphere(unit, std::back_inserter(b), PDS::parameters::minimum_distance(2).random_seed(1));
+  EXPECT_NE(a, b);
+  // the bound is the engine's: an estimate of area / (pi r^2) = 4 points at d = 2R
+  std::vector<Point> points;
+  EXPECT_THROW(PDS::sample_sphere(unit, std::back_inserter(points),
+                                  PDS::parameters::minimum_distance(2).maximum_number_of_points(3)),
+               PDS::Point_limit_exceeded);
+  points.clear();
+  PDS::sample_sphere(unit, std::back_inserter(points),
+                     PDS::parameters::minimum_distance(std::nextafter(2., 0.)).random_seed(0));
+  EXPECT_EQ(points.size(), 2u);
+  expect_maximal_poisson_disk_set(unit, points, std::nextafter(2., 0.));
+}
+
 // Darts are spent where cells are long and thin. Halved across their longer side, rectangles stay
 // about as wide as long near the poles too (test CellsStayAboutAsWideAsLong), and the sampler throws
 // 7.6 to 7.7 darts per sample at about 10,000 points; with the paper's four children, the slivers at
