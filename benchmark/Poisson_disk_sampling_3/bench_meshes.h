@@ -45,10 +45,23 @@ inline void make_cylinder(Mesh& m, int rings)
     }
 }
 
+/// 2,000 strips 1 long and `width` wide, 0.002 apart in the plane z = 0, two triangles each
+inline void make_strips(Mesh& m, double width)
+{
+  for(int k = 0; k < 2000; ++k) {
+    const double y = 0.002 * k;
+    const auto a = m.add_vertex(Mesh::Point(0, y, 0)), b = m.add_vertex(Mesh::Point(1, y, 0));
+    const auto c = m.add_vertex(Mesh::Point(1, y + width, 0)), d = m.add_vertex(Mesh::Point(0, y + width, 0));
+    m.add_face(a, b, c);
+    m.add_face(a, c, d);
+  }
+}
+
 /// A file of CGAL's data set (`lion.off`, ...); "armadillo_loop3": armadillo.off Loop-subdivided
 /// three times, 52,000 faces x 4^3 = 3.3 million faces; "cylinder_128": a cylinder 30 high, of
 /// radius 1, made of 128 triangles as high as it is and 0.1 wide; "cylinder_rings": the same surface
-/// cut into 306 rings, its triangles about as high as they are wide. Read or made once per process.
+/// cut into 306 rings, its triangles about as high as they are wide; "strips_1e-7" and "strips_1e-5":
+/// 2,000 strips that wide (`make_strips`). Read or made once per process.
 inline const Mesh& mesh(const std::string& name)
 {
   static std::map<std::string, std::unique_ptr<Mesh>> cache;
@@ -59,6 +72,8 @@ inline const Mesh& mesh(const std::string& name)
       make_cylinder(*m, 1);
     } else if(name == "cylinder_rings") {
       make_cylinder(*m, 306);
+    } else if(name == "strips_1e-7" || name == "strips_1e-5") {
+      make_strips(*m, name == "strips_1e-7" ? 1e-7 : 1e-5);
     } else if(name == "armadillo_loop3") {
       *m = mesh("armadillo.off");
       CGAL::Subdivision_method_3::Loop_subdivision(*m, CGAL::parameters::number_of_iterations(3));

@@ -587,6 +587,12 @@ void register_cases()
     benchmark::RegisterBenchmark("count_mode/lion.off",
                                  [](benchmark::State& s) { count_mode_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  // strips far narrower than the distance, where a sample covers far less than the first estimate
+  // assumes (a first run of about 1,300 times the target, stopped at twice it)
+  for(const char* name : {"strips_1e-7", "strips_1e-5"})
+    benchmark::RegisterBenchmark((std::string("count_mode/") + name).c_str(),
+                                 [name](benchmark::State& s) { count_mode_case(s, name); })
+        ->Arg(10000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
     benchmark::RegisterBenchmark("sampling_only/lion.off", [](benchmark::State& s) { sampling_only_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);

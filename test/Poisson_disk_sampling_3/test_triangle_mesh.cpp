@@ -280,6 +280,26 @@ TEST(MeshSampling, LocationsRebuildTheSamples)
   }
 }
 
+// A triangle of any size has a unit normal: the cross product of edges 1e-160 long underflowed, and
+// the normal of a face that small, which is sampled, was (0, 0, 0) or short (0.99983 long at 1e-160)
+TEST(MeshSampling, TinyFacesHaveUnitNormals)
+{
+  for(double size : {1., 1e-150, 1e-160, 1e-162, 1e-200, 1e-300}) {
+    const std::vector<Point> p{Point(0, 0, 0), Point(size, 0, 0.5 * size), Point(0.3 * size, size, 0.2 * size)};
+    const std::vector<std::array<std::size_t, 3>> t{{0, 1, 2}};
+    std::vector<PDS::Triangle_sample<K, std::size_t>> samples;
+    PDS::sample_polygon_soup_with_locations(p, t, std::back_inserter(samples),
+                                            PDS::parameters::minimum_distance((std::max)(10 * size, 1e-100)));
+    ASSERT_EQ(samples.size(), 1u) << size;
+    const K::Vector_3 n = samples[0].normal;
+    EXPECT_NEAR(n.squared_length(), 1., 1e-15) << size;
+    // the unit triangle's normal, whose edges are these scaled by 1 / size
+    const K::Vector_3 e1(1, 0, 0.5), e2(0.3, 1, 0.2);
+    const K::Vector_3 c = CGAL::cross_product(e1, e2);
+    EXPECT_NEAR(n * c / std::sqrt(c.squared_length()), 1., 1e-15) << size;
+  }
+}
+
 struct Soup
 {
   std::vector<Point> points;
@@ -423,6 +443,33 @@ TEST(MeshSampling, NarrowStripsOutnumberTheExpectedCount)
   EXPECT_GT(double(out.size()), 100 * expected);
   EXPECT_GT(double(stats.peak_active_fragments), 64 * (expected + 500) + 1048576) << "the old bound's regime";
   EXPECT_TRUE(PDS::is_poisson_disk_set(out, d));
+}
+
+// There, the first distance of a number_of_points search, from the density in the plane, gives far
+// more points than asked for: 63,642 on 500 strips 1 long and 1e-4 wide for a target of 1,000, whose
+// first run ended the search at a bound of 20,000 (Point_limit_exceeded), and with no bound made its
+// thousands of times the target, in time and memory. Runs stop at about twice the target.
+TEST(MeshSampling, NumberOfPointsOnNarrowStrips)
+{
+  std::vector<Point> p;
+  std::vector<std::array<std::size_t, 3>> t;
+  for(std::size_t k = 0; k < 500; ++k) {
+    const double y = 0.01 * double(k);
+    p.insert(p.end(), {Point(0, y, 0), Point(1, y, 0), Point(1, y + 1e-4, 0), Point(0, y + 1e-4, 0)});
+    t.push_back({4 * k, 4 * k + 1, 4 * k + 2});
+    t.push_back({4 * k, 4 * k + 2, 4 * k + 3});
+  }
+  std::vector<Point> out;
+  PDS::Sampling_statistics stats;
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                           PDS::parameters::number_of_points(1000).maximum_number_of_points(20000).statistics(
+                               std::ref(stats)));
+  EXPECT_NEAR(double(out.size()), 1000., 10.);
+  EXPECT_TRUE(PDS::is_poisson_disk_set(out, stats.minimum_distance));
+  EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, out, stats.minimum_distance));
+  // the first run's distance, as the search computes it, gives more than the 2 n + 64 it stops at
+  const double first = std::sqrt(0.6965 * 500 * 1e-4 / 1000);
+  EXPECT_LT(first, stats.minimum_distance / 4);
 }
 
 // Faces whose area is below the largest's / 2^1024 (a sliver 1e-310 high, subnormal, and one of

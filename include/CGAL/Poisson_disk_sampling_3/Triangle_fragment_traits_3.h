@@ -174,11 +174,14 @@ public:
     return w;
   }
 
-  /// unit normal of a triangle (right-hand rule on its vertex order), or the zero vector if it has no area
+  /// unit normal of a triangle (right-hand rule on its vertex order), or the zero vector if it has no
+  /// area; computed on the edges scaled to unit size, so that a triangle 1e-160 wide, whose cross
+  /// product underflows, has one too
   Point triangle_normal(std::uint32_t face) const
   {
     const Face& f = faces_[face];
-    Point n = cross(f.e1, f.e2);
+    int k;
+    Point n = scaled_cross(f.e1, f.e2, k);
     const double l = length(n);
     if(l > 0)
       for(double& c : n) c /= l;
@@ -1031,10 +1034,23 @@ private:
   // edges 1e-162 long underflows).
   static double face_area(const Point& e1, const Point& e2)
   {
+    int k = 0;
+    const Point c = scaled_cross(e1, e2, k);
+    const double scaled = 0.5 * length(c);
+    if(!(scaled > 0) || k == 0) return scaled;
+    const double area = std::ldexp(scaled, 2 * k);
+    return area > 0 ? area : std::numeric_limits<double>::denorm_min();
+  }
+  // the cross product of e1 and e2 divided by 2^(2k), computed on the edges scaled by 2^-k, which
+  // brings their largest coordinate to [1, 2), exactly; zero only for edges on one line, decided
+  // exactly (see face_area()). k is 0 where the largest coordinate is 0 or not finite.
+  static Point scaled_cross(const Point& e1, const Point& e2, int& k)
+  {
     double m = 0;
     for(int i = 0; i < 3; ++i) m = (std::max)({m, std::abs(e1[i]), std::abs(e2[i])});
-    if(!(m > 0) || !std::isfinite(m)) return 0.5 * length(cross(e1, e2));
-    const int k = std::ilogb(m);
+    k = 0;
+    if(!(m > 0) || !std::isfinite(m)) return cross(e1, e2);
+    k = std::ilogb(m);
     Point a, b;
     for(int i = 0; i < 3; ++i) {
       a[i] = std::ldexp(e1[i], -k);
@@ -1048,10 +1064,7 @@ private:
         c[i] = CGAL::to_double(ET(a[j]) * ET(b[l]) - ET(a[l]) * ET(b[j]));
       }
     }
-    const double scaled = 0.5 * length(c);
-    if(!(scaled > 0)) return scaled;
-    const double area = std::ldexp(scaled, 2 * k);
-    return area > 0 ? area : std::numeric_limits<double>::denorm_min();
+    return c;
   }
   // |a|; where its square is not a normal double (a cross product below about 1e-150 or above about
   // 1e150: a triangle smaller than 1e-75 or larger than 1e75), computed on a divided by its largest

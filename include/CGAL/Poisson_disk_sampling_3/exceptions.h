@@ -26,15 +26,16 @@ public:
 
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Thrown before any large allocation when a request would produce more points than the bound
-/// `maximum_number_of_points` (default 100 million): the estimate area / (pi r^2) of a radius
-/// request, or the target of a `number_of_points` request, is checked first, and the actual count
-/// while sampling (thin or scattered surfaces can exceed the estimate). Also thrown, before any piece
-/// is stored, when a model's roots for the distance (the optional `initial_fragments(out, d)` of
-/// `SurfaceFragmentTraits_3`) would outnumber its faces by more than four times that bound plus six
-/// per face, the memory those take; and while sampling, when a model's fragments in wait outnumber
-/// 64 times its samples so far, its expected points and its initial fragments, plus 2^20 (a model
-/// whose coverage tests never succeed: see `SurfaceFragmentTraits_3`), or 2^32 or more fragments of
-/// about the same area would be in wait at once.
+/// `maximum_number_of_points` (default 100 million): the estimate area / (pi r^2) of a radius request,
+/// or the target of a `number_of_points` request, is checked first, and the actual count while sampling
+/// a radius request (thin or scattered surfaces can exceed the estimate; the runs of a
+/// `number_of_points` search stop at the bound instead, see `Target_not_reached`). Also thrown, before
+/// any piece is stored, when a model's roots for the distance (the optional `initial_fragments(out, d)`
+/// of `SurfaceFragmentTraits_3`) would outnumber its faces by more than four times that bound plus six
+/// per face, the memory those take; and while sampling, when a model's fragments in wait outnumber 64
+/// times its samples so far, its expected points and its initial fragments, plus 2^20 (a model whose
+/// coverage tests never succeed: see `SurfaceFragmentTraits_3`), or 2^32 or more fragments of about the
+/// same area would be in wait at once.
 class Point_limit_exceeded : public std::length_error
 {
 public:
@@ -44,7 +45,8 @@ public:
 
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Thrown by the `number_of_points` mode when no minimum distance found within its iteration budget
-/// gives the requested count within the tolerance (1%, at least one point).
+/// gives the requested count within the tolerance (1%, at least one point), among which when every run
+/// of its search made more points than `maximum_number_of_points` and was stopped.
 class Target_not_reached : public std::runtime_error
 {
 public:

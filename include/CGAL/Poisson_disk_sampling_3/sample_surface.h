@@ -29,7 +29,9 @@ namespace Poisson_disk_sampling_3 {
 struct Sampling_statistics
 {
   double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
-  std::size_t number_of_runs = 0;    ///< full dart-throwing runs: 1, or the search's runs for `number_of_points`
+  /// dart-throwing runs: 1, or the search's runs for `number_of_points` (among which runs stopped at
+  /// twice the target, which cost about as much as two runs of the target)
+  std::size_t number_of_runs = 0;
   std::size_t darts = 0;             ///< darts thrown by the last run
   std::size_t dropped_fragments = 0; ///< fragments dropped uncovered at the depth floor by the last run (normally 0)
   /// darts of the last run that landed on a fragment found entirely covered, by samples accepted
@@ -175,14 +177,17 @@ constexpr bool read_parallel()
 
 /// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted. With
 /// `check_expected_count` false, the run does not refuse the distance up front (see
-/// `Dart_throwing_engine::set_expected_count_check()`).
+/// `Dart_throwing_engine::set_expected_count_check()`). Returns false if the run stopped at
+/// `sample_stop` samples, not maximal (see `Dart_throwing_engine::set_sample_stop()`).
 template <class Traits, class Emit>
-void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points, bool parallel,
-                Sampling_statistics& stats, Emit&& emit, bool check_expected_count = true)
+bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points, bool parallel,
+                Sampling_statistics& stats, Emit&& emit, bool check_expected_count = true,
+                std::size_t sample_stop = std::size_t(-1))
 {
   Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
   engine.set_expected_count_check(check_expected_count);
   engine.set_parallel(parallel);
+  engine.set_sample_stop(sample_stop);
   const Engine_statistics e = engine.run(emit);
   stats.minimum_distance = d;
   ++stats.number_of_runs;
@@ -190,6 +195,7 @@ void run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   stats.dropped_fragments = e.dropped_at_max_depth;
   stats.darts_on_covered_fragments = e.darts_on_covered;
   stats.peak_active_fragments = e.peak_active;
+  return !e.stopped;
 }
 
 /// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run
@@ -210,49 +216,60 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   double d = std::sqrt(0.6965 * area / double(n));
   // checked here: the engine would name the distance as if the user had given it (or, where it
   // underflows to 0, call it not positive)
-  check_distance_range(d, "about " + std::to_string(n) + " points on a surface of area " + number_text(area) +
-                              " need a minimum distance of about " + number_text(d) + ", which");
+  const std::string first_distance = "about " + std::to_string(n) + " points on a surface of area " +
+                                     number_text(area) + " need a minimum distance of about " + number_text(d) +
+                                     ", which";
+  check_distance_range(d, first_distance);
+  check_distance_precision(d, traits.position_error(), first_distance);
   double slope = -2, last_d = 0, last_n = 0;
   const double infinity = std::numeric_limits<double>::infinity();
   double too_many = 0, too_few = infinity;
   std::vector<typename Traits::Sample> best;
   Sampling_statistics best_stats;
+  // A run stops at `stop` samples, about twice the target, or at the bound: the first distance
+  // assumes that a sample covers about pi r^2 of the surface, as in the plane, and on strips far
+  // narrower than d, where it covers far less, the first run made 1,267 times the target (12.7
+  // million points and 3.6 GB for 10,000 on 2,000 strips 10^-7 wide) and could exhaust the memory
+  // or the bound where a larger distance reaches the target.
+  const std::size_t stop =
+      n <= (std::numeric_limits<std::size_t>::max() - 64) / 2 ? (std::min)(max_points, 2 * n + 64) : max_points;
+  std::size_t stopped_runs = 0;
   // Up to 24 runs: near the target a run is a draw of a count that varies by a few points from one
   // distance to the next, and for 150 points only 149 to 151 are within tolerance. Large targets
   // take one to three runs (their tolerance is wide); small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
     std::vector<typename Traits::Sample> samples;
-    try {
-      run_engine(
-          traits, d, seed, max_points, parallel, stats,
-          [&](const typename Traits::Sample& s) { samples.push_back(s); }, false);
-    } catch(const Pieces_limit_exceeded&) {
-      throw;
-    } catch(const Point_limit_exceeded&) {
-      throw Point_limit_exceeded("a run of the search for number_of_points (" + std::to_string(n) +
-                                 ") exceeded maximum_number_of_points (" + std::to_string(max_points) +
-                                 "); a run can land 1% or more above the target: allow a few percent more");
+    const bool complete = run_engine(
+        traits, d, seed, max_points, parallel, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
+        false, stop);
+    if(complete) {
+      const double got = double(samples.size());
+      if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
+        best.swap(samples);
+        best_stats = stats;
+      }
+      if(std::abs(got - double(n)) <= tolerance) {
+        best_stats.number_of_runs = stats.number_of_runs;
+        stats = best_stats;
+        return best;
+      }
+      // the bracket: the largest distance that gave too many points, the smallest that gave too few
+      if(got > double(n)) too_many = (std::max)(too_many, d);
+      else too_few = (std::min)(too_few, d);
+      if(last_n > 0 && got != last_n && d != last_d) {
+        const double s = (std::log(got) - std::log(last_n)) / (std::log(d) - std::log(last_d));
+        slope = (std::min)(-1., (std::max)(-3., s));
+      }
+      last_d = d;
+      last_n = got;
+      d *= std::pow(double(n) / got, 1 / slope);
+    } else {
+      // more than `stop` points, by a factor unknown: at least the step of the gentlest slope, -1
+      ++stopped_runs;
+      too_many = (std::max)(too_many, d);
+      last_n = 0;
+      d *= (std::max)(double(stop) / double(n), 1.05);
     }
-    const double got = double(samples.size());
-    if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
-      best.swap(samples);
-      best_stats = stats;
-    }
-    if(std::abs(got - double(n)) <= tolerance) {
-      best_stats.number_of_runs = stats.number_of_runs;
-      stats = best_stats;
-      return best;
-    }
-    // the bracket: the largest distance that gave too many points, the smallest that gave too few
-    if(got > double(n)) too_many = (std::max)(too_many, d);
-    else too_few = (std::min)(too_few, d);
-    if(last_n > 0 && got != last_n && d != last_d) {
-      const double s = (std::log(got) - std::log(last_n)) / (std::log(d) - std::log(last_d));
-      slope = (std::min)(-1., (std::max)(-3., s));
-    }
-    last_d = d;
-    last_n = got;
-    d *= std::pow(double(n) / got, 1 / slope);
     // The count is not a monotone function of d (each d draws other darts): near the target, steps
     // from the slope can swing between two counts on either side. Once the target is bracketed, a
     // step that leaves the bracket, or lands in its outer eighths, bisects it instead.
@@ -261,10 +278,16 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
       if(!(t > 0.125 && t < 0.875)) d = std::sqrt(too_many * too_few);
     }
   }
+  if(best.empty())
+    throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points: every run of the search "
+                             "made more than " + std::to_string(stop) + (stop == max_points ?
+                             " (maximum_number_of_points)" : " (twice the target and 64)") + " and was stopped");
   throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points within " +
                            number_text(tolerance) + " (1% of them, at least one); the closest had " +
-                           std::to_string(best.size()) + ". The count jumps by a few points from one distance "
-                           "to the next: another random_seed may reach it");
+                           std::to_string(best.size()) + (stopped_runs > 0 ? ", and " + std::to_string(stopped_runs) +
+                           " runs made more than " + std::to_string(stop) + " and were stopped" : std::string()) +
+                           ". The count jumps by a few points from one distance to the next: another random_seed "
+                           "may reach it");
 }
 
 /// Runs a size request and calls `emit(sample)` for each sample; fills the `statistics` parameter if
@@ -316,7 +339,10 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_points}
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
-///       has N points within 1% (at least one point), in one to three full runs, more for small targets}
+///       has N points within 1% (at least one point), in one to three full runs, more for small targets
+///       and for surfaces where a sample covers far less than pi r^2 (strips much narrower than the
+///       distance); a run stops at 2N + 64 points or the bound, so that the memory stays that of about
+///       2N points}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}
@@ -353,13 +379,15 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 /// \throws Invalid_input for a bad size (among which a minimum distance outside 2^-400 to 2^400) or a
 ///         surface with no area, before any sample is written; and while sampling, for a model that
 ///         breaks the rules of `SurfaceFragmentTraits_3` the engine checks (an area that is not a
-///         number or negative, a fragment larger than the largest initial one, 2^30 refused darts in a
-///         row), after which `out` may have received some samples.
+///         number or negative, a fragment larger than the largest initial one, an area that changed
+///         between the calls of `area()`, 2^30 refused darts in a row), after which `out` may have
+///         received some samples.
 /// \throws Point_limit_exceeded when the bound is exceeded: before any sample is written for the
 ///         estimate, while sampling for the actual count (a surface that needs more samples than its
 ///         area predicts) and for a model whose fragments in wait outnumber the bound of
 ///         `SurfaceFragmentTraits_3`, after which `out` may have received some samples.
-/// \throws Target_not_reached when `number_of_points` cannot be met
+/// \throws Target_not_reached when `number_of_points` cannot be met (also when every run of its search
+///         stops at `maximum_number_of_points`)
 template <class SurfaceFragmentTraits, class SampleOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 SampleOutputIterator sample_surface(const SurfaceFragmentTraits& traits, SampleOutputIterator out,

@@ -111,6 +111,14 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
   return traits;
 }
 
+// a soup's points are its positions: a vertex_point_map, which the mesh functions take, would be ignored
+template <class NamedParameters>
+void check_no_vertex_point_map()
+{
+  static_assert(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_point_t>::value,
+                "the polygon soup functions take no vertex_point_map: the soup's points are its positions");
+}
+
 template <class GeomTraits, class Face, class FaceOf>
 Triangle_sample<GeomTraits, Face> located_sample(const Triangle_fragment_traits_3& traits,
                                                  const Triangle_fragment_traits_3::Sample& s, const FaceOf& face_of)
@@ -229,6 +237,7 @@ PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonR
   typedef typename CGAL::Kernel_traits<Point>::Kernel Default_kernel;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
                                                              Default_kernel>::type GT;
+  internal::check_no_vertex_point_map<NamedParameters>();
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
   internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::output_point<typename GT::Point_3>(s.point);
@@ -261,6 +270,7 @@ SampleOutputIterator sample_polygon_soup_with_locations(const PointRange& points
   typedef typename CGAL::Kernel_traits<Point>::Kernel Default_kernel;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
                                                              Default_kernel>::type GT;
+  internal::check_no_vertex_point_map<NamedParameters>();
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
   internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::located_sample<GT, std::size_t>(traits, s, [](std::uint32_t i) { return std::size_t(i); });

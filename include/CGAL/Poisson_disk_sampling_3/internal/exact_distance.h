@@ -36,11 +36,12 @@ inline void check_distance_range(double d, const std::string& what = std::string
 
 /// throws `Invalid_input` unless `d` exceeds 2^20 times `position_error`, a model's bound on the
 /// rounding of its points: below, rounding decides coverage, the subdivision would not end before
-/// its depth floor, and the certificate would split every fragment to its own floor
-inline void check_distance_precision(double d, double position_error)
+/// its depth floor, and the certificate would split every fragment to its own floor. The message
+/// names `d` by `what` where given, as check_distance_range() does.
+inline void check_distance_precision(double d, double position_error, const std::string& what = std::string())
 {
   if(!(d > 0x1.0p20 * position_error))
-    throw Invalid_input("the minimum distance " + number_text(d) +
+    throw Invalid_input((what.empty() ? "the minimum distance " + number_text(d) : what) +
                         " is too small for the precision of the coordinates (rounding error " +
                         number_text(position_error) + ")");
 }
