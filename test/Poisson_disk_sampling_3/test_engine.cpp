@@ -309,12 +309,20 @@ std::vector<std::array<double, 3>> sample_square(const Square_traits& traits, do
   return points;
 }
 
-// the certificate of a user's model, as a user calls it
+// the certificate of a user's model, as a user calls it, on the model's points; the same answer on
+// CGAL's points, and for a set not maximal a gap, away from every point
 bool certified_maximal(const Square_traits& traits, const std::vector<std::array<double, 3>>& points, double d)
 {
   std::vector<CGAL::Simple_cartesian<double>::Point_3> cgal_points;
   for(const auto& p : points) cgal_points.emplace_back(p[0], p[1], p[2]);
-  return bool(PDS::is_maximal_on_surface(traits, cgal_points, d));
+  const auto check = PDS::is_maximal_on_surface(traits, points, d);
+  EXPECT_EQ(bool(check), bool(PDS::is_maximal_on_surface(traits, cgal_points, d)));
+  if(check.uncovered_point)
+    for(const auto& p : points) {
+      const auto& g = *check.uncovered_point;
+      EXPECT_GT((g[0] - p[0]) * (g[0] - p[0]) + (g[1] - p[1]) * (g[1] - p[1]) + (g[2] - p[2]) * (g[2] - p[2]), d * d);
+    }
+  return bool(check);
 }
 
 TEST(Engine, SamplesAUserModel)
@@ -460,6 +468,12 @@ struct Unsteady_area : Square_traits
   mutable std::atomic<unsigned> calls{0};
   double area(const Fragment& f) const { return (calls++ % 2 == 0 ? 1 : 4) * f.size * f.size; }
 };
+// (and one that grows in the bin of the largest fragments, whose upper bound was not checked)
+struct Growing_root_area : Square_traits
+{
+  mutable std::atomic<unsigned> calls{0};
+  double area(const Fragment& f) const { return (calls++ < 2 ? 1 : 1.5) * f.size * f.size; }
+};
 // - coverage tests that never succeed: the fragments grew four times a level down to the depth floor;
 struct Never_covered : Square_traits
 {
@@ -495,6 +509,7 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
   // bounds twice the area stay below the root's (1/2 for the first children): sampled
   EXPECT_EQ(what(Loose_bounds(2), PDS::Invalid_input("")).find("no exception, "), 0u);
   EXPECT_NE(what(Unsteady_area(), PDS::Invalid_input("")).find("must return the same double"), std::string::npos);
+  EXPECT_NE(what(Growing_root_area(), PDS::Invalid_input("")).find("must return the same double"), std::string::npos);
   EXPECT_NE(what(Never_covered(), PDS::Point_limit_exceeded("")).find("exceed 64 times the samples"),
             std::string::npos);
   // in count mode too, not as a run that overshot maximum_number_of_points

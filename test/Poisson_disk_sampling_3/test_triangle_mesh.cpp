@@ -467,9 +467,29 @@ TEST(MeshSampling, NumberOfPointsOnNarrowStrips)
   EXPECT_NEAR(double(out.size()), 1000., 10.);
   EXPECT_TRUE(PDS::is_poisson_disk_set(out, stats.minimum_distance));
   EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, out, stats.minimum_distance));
-  // the first run's distance, as the search computes it, gives more than the 2 n + 64 it stops at
-  const double first = std::sqrt(0.6965 * 500 * 1e-4 / 1000);
-  EXPECT_LT(first, stats.minimum_distance / 4);
+  // runs stopped at 2 n + 64 = 2,064 points, below the bound: the first distance is far too small
+  EXPECT_GE(stats.stopped_runs, 2u);
+  EXPECT_LT(stats.stopped_runs, stats.number_of_runs);
+  // More far-apart components than the bound: every run is stopped, each at a distance 1.5 times the
+  // last (the bound over the target; 1.5^24 times the first distance stays below their spacing), and
+  // the search says so
+  std::vector<Point> q;
+  std::vector<std::array<std::size_t, 3>> u;
+  for(std::size_t k = 0; k < 300; ++k) {
+    const double x = 1000. * double(k);
+    q.insert(q.end(), {Point(x, 0, 0), Point(x + 0.01, 0, 0), Point(x, 0.01, 0)});
+    u.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  try {
+    out.clear();
+    PDS::sample_polygon_soup(q, u, std::back_inserter(out),
+                             PDS::parameters::number_of_points(100).maximum_number_of_points(150));
+    ADD_FAILURE() << out.size() << " points";
+  } catch(const PDS::Target_not_reached& e) {
+    EXPECT_NE(std::string(e.what()).find("every run of the search made more than 150 (maximum_number_of_points)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // Faces whose area is below the largest's / 2^1024 (a sliver 1e-310 high, subnormal, and one of

@@ -562,6 +562,17 @@ private:
     Ball b;
     b.w = Point{{center[0] - c_[0], center[1] - c_[1], center[2] - c_[2]}};
     const double w2 = b.w[0] * b.w[0] + b.w[1] * b.w[1] + b.w[2] * b.w[2];
+    b.wxy = length_xy(b.w);
+    const double w_length = std::sqrt(w2);
+    // A ball that holds the whole sphere, |w| + R < radius with the rounding of |w| (a few units in
+    // the last place; 8 eps taken), covers every rectangle. Decided first: below, t and the margin
+    // overflow where radius^2 / R does (radius above about 1e322 R made the threshold NaN, and no
+    // rectangle was covered), and near radius = 2R the margin alone, 768 eps R, asks for a radius
+    // above 2R (1 + 4e-14) where this asks for 2R (1 + 2e-15).
+    if((w_length + r_) * (1 + 8 * std::numeric_limits<double>::epsilon()) < radius) {
+      b.threshold = -std::numeric_limits<double>::infinity();
+      return b;
+    }
     const double t = (r_ * r_ + w2 - radius * radius) / (2 * r_);
     // The margin is relative to the sphere's radius, not to its centre's coordinates: no point of the
     // sphere is computed here, and w, a difference, is within u |w| of its exact value (u = eps / 2).
@@ -572,10 +583,9 @@ private:
     // fails by far more than its rounding. (Far from the origin, position_error() includes the
     // rounding of the centre's coordinates: as a margin, it left a band along the balls' boundaries
     // that no single ball decided, where the union test, local, had proven coverage.)
-    const double margin = 64 * std::numeric_limits<double>::epsilon() * (r_ + std::sqrt(w2) + radius) *
+    const double margin = 64 * std::numeric_limits<double>::epsilon() * (r_ + w_length + radius) *
                           (1 + radius / r_);
     b.threshold = t + margin;
-    b.wxy = length_xy(b.w);
     return b;
   }
 

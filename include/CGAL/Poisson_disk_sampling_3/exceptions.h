@@ -46,7 +46,8 @@ public:
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Thrown by the `number_of_points` mode when no minimum distance found within its iteration budget
 /// gives the requested count within the tolerance (1%, at least one point), among which when every run
-/// of its search made more points than `maximum_number_of_points` and was stopped.
+/// of its search was stopped, at twice the target and 64 or at `maximum_number_of_points` (more
+/// far-apart components than that, for instance).
 class Target_not_reached : public std::runtime_error
 {
 public:

@@ -9,8 +9,10 @@
 #include <CGAL/Poisson_disk_sampling_3/sample_sphere.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_triangle_mesh.h>
 
+#include <array>
 #include <iterator>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -52,7 +54,11 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
   Maximality_check<Point_3> result;
   result.maximal = c.maximal;
   result.uncovered_area = c.uncovered_area;
-  if(c.has_witness) result.uncovered_point = Point_3(c.witness[0], c.witness[1], c.witness[2]);
+  if constexpr(std::is_same<Point_3, std::array<double, 3>>::value) {
+    if(c.has_witness) result.uncovered_point = c.witness;
+  } else {
+    if(c.has_witness) result.uncovered_point = Point_3(c.witness[0], c.witness[1], c.witness[2]);
+  }
   return result;
 }
 
@@ -150,13 +156,15 @@ Maximality_check<typename K::Point_3> is_maximal(const CGAL::Sphere_3<K>& sphere
 /// `refine()`, so it checks them; but it relies on the model's `split()` tiling each fragment and its
 /// `is_covered()` being conservative: a `true` answer is a proof on the surface that they describe.
 /// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
-/// @tparam PointRange a range of `Point_3` of any CGAL kernel
+/// @tparam PointRange a range of `Point_3` of any CGAL kernel, or of `std::array<double, 3>` (the
+/// model's points)
 ///
 /// @param traits the surface
 /// @param samples the samples to certify, for instance the points of the samples of `sample_surface()`
 /// @param minimum_distance the distance d = 2r they were sampled for
 ///
-/// \returns `Maximality_check<Point_3>`, with the value type of `PointRange`
+/// \returns `Maximality_check<Point_3>`, with the value type of `PointRange` (`uncovered_point`
+/// converts to `bool` and is dereferenced as for any point type)
 /// \throws Invalid_input for a distance that `sample_surface()` refuses for the model, a surface with
 /// no area, and samples that `is_poisson_disk_set()` refuses
 template <class SurfaceFragmentTraits, class PointRange>

@@ -11,10 +11,12 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -34,13 +36,21 @@ struct Poisson_disk_check
 
 namespace internal {
 
+// the coordinates of a point of a CGAL kernel, or of a model's point, `std::array<double, 3>`
+template <class Point>
+std::array<double, 3> coordinates(const Point& p)
+{
+  if constexpr(std::is_same<Point, std::array<double, 3>>::value) return p;
+  else return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
 template <class PointRange>
 std::vector<double> coordinates_of(const PointRange& points)
 {
   std::vector<double> xyz;
   std::size_t i = 0;
   for(const auto& p : points) {
-    for(double c : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}) {
+    for(double c : coordinates(p)) {
       if(!std::isfinite(c)) throw Invalid_input("point " + std::to_string(i) + " has a coordinate that is not finite");
       xyz.push_back(c);
     }
@@ -79,7 +89,8 @@ inline Point_hash_grid grid_of(const std::vector<double>& xyz, double d)
 /// exact rational arithmetic where the filter cannot decide. Sorts the points by cell of a grid of side
 /// 2d (O(n log n)), then runs in expected linear time.
 ///
-/// @tparam PointRange a range of `Point_3` of any CGAL kernel
+/// @tparam PointRange a range of `Point_3` of any CGAL kernel, or of `std::array<double, 3>` (the points
+/// of the samples of a model of `SurfaceFragmentTraits_3`)
 /// @param points the points
 /// @param minimum_distance the distance d = 2r
 /// \returns the verdict, and an offending pair if there is one

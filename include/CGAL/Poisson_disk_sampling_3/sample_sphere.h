@@ -38,12 +38,12 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 
 // A minimum distance of the sphere's diameter or more: one point covers the sphere, but the point of the
 // sphere farthest from it, its antipode, is 2R away, within the rounding of the coverage tests of d
-// from d = 2R to about 2R (1 + 5 10^-14). There the engine proved no fragment around the antipode
-// covered, and refined a cap about 10^-6 R wide down to its depth floor, until the bound on the
-// fragments in wait stopped it (Point_limit_exceeded); with d above 10^322 R, the coverage tests
-// overflowed. The set is one uniform point: the engine's first dart, drawn here. Returns false, and does
-// nothing, for a smaller distance or a number_of_points request (whose search starts above 2R for one
-// or two points, where the engine proves coverage, and below 2R for more).
+// from d = 2R to about 2R (1 + 2 10^-15). There the engine can prove no fragment around the antipode
+// covered, and refined a cap around it down to its depth floor, until the bound on the fragments in
+// wait stopped it (Point_limit_exceeded, after 1.5 s). The set is one uniform point, drawn as the
+// engine draws a dart (an octant, then a point of it), though not from the same random numbers.
+// Returns false, and does nothing, for a smaller distance or a number_of_points request (whose search
+// starts above 2R for one or two points, and below 2R for more).
 template <class NamedParameters, class Emit>
 bool sample_beyond_diameter(const Sphere_fragment_traits_3& traits, const NamedParameters& np, Emit&& emit)
 {
@@ -89,8 +89,9 @@ bool sample_beyond_diameter(const Sphere_fragment_traits_3& traits, const NamedP
 ///        `sample_surface()`
 ///
 /// A minimum distance of the diameter 2R or more gives one uniform point: every point of the sphere
-/// is within 2R of it. Up to about 2R (1 + 5 10^-14), the antipode's distance 2R is within the
-/// rounding of d, and `is_maximal()` answers such a set undecided.
+/// is within 2R of it. Up to about 2R (1 + 2 10^-15), the antipode's distance 2R is within the
+/// rounding of d, and `is_maximal()` answers such a set undecided. (This is the one case where
+/// `sample_sphere()` does not run the engine of `sample_surface()`.)
 ///
 /// \returns the output iterator past the last point
 /// \throws Invalid_input for a sphere whose squared radius is not positive and finite as a double, a

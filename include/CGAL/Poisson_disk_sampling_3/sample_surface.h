@@ -29,9 +29,12 @@ namespace Poisson_disk_sampling_3 {
 struct Sampling_statistics
 {
   double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
-  /// dart-throwing runs: 1, or the search's runs for `number_of_points` (among which runs stopped at
-  /// twice the target, which cost about as much as two runs of the target)
+  /// dart-throwing runs: 1, or the search's runs for `number_of_points`, among which `stopped_runs`
   std::size_t number_of_runs = 0;
+  /// runs of a `number_of_points` search for N points stopped at 2N + 64 samples, or at
+  /// `maximum_number_of_points` if lower (a run at a distance far too small): each costs about as much
+  /// as a run of 2N points
+  std::size_t stopped_runs = 0;
   std::size_t darts = 0;             ///< darts thrown by the last run
   std::size_t dropped_fragments = 0; ///< fragments dropped uncovered at the depth floor by the last run (normally 0)
   /// darts of the last run that landed on a fragment found entirely covered, by samples accepted
@@ -202,7 +205,8 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// uses the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2
 /// points); later runs correct d with the slope of log(count) over log(d) measured between runs,
 /// and bisect the bracket of distances that gave too many and too few points when a step would
-/// leave it. One to three full runs, more for small targets.
+/// leave it. One to three full runs, more for small targets and where the first distance is far off
+/// (runs stopped at 2n + 64 points).
 template <class Traits>
 std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
                                                    std::size_t max_points, bool parallel, Sampling_statistics& stats)
@@ -236,7 +240,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   std::size_t stopped_runs = 0;
   // Up to 24 runs: near the target a run is a draw of a count that varies by a few points from one
   // distance to the next, and for 150 points only 149 to 151 are within tolerance. Large targets
-  // take one to three runs (their tolerance is wide); small ones, that may need more, are cheap.
+  // take one to three runs (their tolerance is wide) where the first distance is about right;
+  // small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
@@ -250,6 +255,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
       }
       if(std::abs(got - double(n)) <= tolerance) {
         best_stats.number_of_runs = stats.number_of_runs;
+        best_stats.stopped_runs = stopped_runs;
         stats = best_stats;
         return best;
       }
@@ -264,8 +270,10 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
       last_n = got;
       d *= std::pow(double(n) / got, 1 / slope);
     } else {
-      // more than `stop` points, by a factor unknown: at least the step of the gentlest slope, -1
+      // more than `stop` points, by a factor unknown: the step of the gentlest slope, -1, for `stop`
+      // points (twice as large, or more, unless the bound stopped the run), and at least 5%
       ++stopped_runs;
+      stats.stopped_runs = stopped_runs;
       too_many = (std::max)(too_many, d);
       last_n = 0;
       d *= (std::max)(double(stop) / double(n), 1.05);
@@ -284,8 +292,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                              " (maximum_number_of_points)" : " (twice the target and 64)") + " and was stopped");
   throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points within " +
                            number_text(tolerance) + " (1% of them, at least one); the closest had " +
-                           std::to_string(best.size()) + (stopped_runs > 0 ? ", and " + std::to_string(stopped_runs) +
-                           " runs made more than " + std::to_string(stop) + " and were stopped" : std::string()) +
+                           std::to_string(best.size()) + (stopped_runs > 0 ? "; runs stopped at " +
+                           std::to_string(stop) + " points: " + std::to_string(stopped_runs) : std::string()) +
                            ". The count jumps by a few points from one distance to the next: another random_seed "
                            "may reach it");
 }
@@ -316,7 +324,7 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Generates a maximal Poisson-disk sample set on the surface described by `traits`, by the optimized
 /// dart throwing of the paper's Section 3. Every other sampling function of the package is a facade
-/// over this one.
+/// over this one (but `sample_sphere()` at a distance of its diameter or more, see there).
 ///
 /// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
 /// @tparam SampleOutputIterator an output iterator accepting `SurfaceFragmentTraits::Sample`
@@ -342,7 +350,7 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///       has N points within 1% (at least one point), in one to three full runs, more for small targets
 ///       and for surfaces where a sample covers far less than pi r^2 (strips much narrower than the
 ///       distance); a run stops at 2N + 64 points or the bound, so that the memory stays that of about
-///       2N points}
+///       4N points (the closest run kept, and the next)}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}
@@ -383,11 +391,12 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///         between the calls of `area()`, 2^30 refused darts in a row), after which `out` may have
 ///         received some samples.
 /// \throws Point_limit_exceeded when the bound is exceeded: before any sample is written for the
-///         estimate, while sampling for the actual count (a surface that needs more samples than its
-///         area predicts) and for a model whose fragments in wait outnumber the bound of
+///         estimate, while sampling a radius request for the actual count (a surface that needs more
+///         samples than its area predicts) and for a model whose fragments in wait outnumber the bound of
 ///         `SurfaceFragmentTraits_3`, after which `out` may have received some samples.
 /// \throws Target_not_reached when `number_of_points` cannot be met (also when every run of its search
-///         stops at `maximum_number_of_points`)
+///         is stopped, at 2N + 64 points or at `maximum_number_of_points`); `statistics` then holds
+///         the last run's
 template <class SurfaceFragmentTraits, class SampleOutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 SampleOutputIterator sample_surface(const SurfaceFragmentTraits& traits, SampleOutputIterator out,

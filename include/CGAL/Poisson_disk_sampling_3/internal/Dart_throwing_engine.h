@@ -37,8 +37,7 @@ typedef std::array<double, 3> Point_d;
 
 /// The refusal of a model's pieces: its roots for the distance, where they outnumber its whole roots
 /// far, or its fragments in wait, where they outnumber its samples far (`Point_limit_exceeded`, so
-/// that callers need not know it): the count search passes it on as it is, not as an overshoot of its
-/// target.
+/// that callers need not know it).
 class Pieces_limit_exceeded : public Point_limit_exceeded
 {
 public:
@@ -203,6 +202,10 @@ public:
     max_child_area_ = max_area * (1 + 0x1.0p-20);
     auto push = [&](const Fragment& f) {
       const double a = traits_.area(f);
+      if(!(a <= max_child_area_))
+        throw Invalid_input("the surface model gave an initial fragment the area " + number_text(a) +
+                            ", above the largest it gave them when they were counted (" + number_text(max_area) +
+                            "): area() must return the same double for the same fragment on every call");
       if(a > 0) pool.push(make_item(f, 0), a);
     };
     root_fragments(traits_, d_, Calling_output(&push));
@@ -280,7 +283,8 @@ public:
           // the pool's rejection step: a refused draw is no dart; nor is a dart that a rejection step in
           // the model refuses
           const double area = traits_.area(d.item.fragment);
-          if(!pool.is_filed_with(d.handle, area)) refuse_changed_area(area, pool.bin_range(d.handle));
+          if(!pool.is_filed_with(d.handle, area) || area > max_child_area_)
+            refuse_changed_area(area, pool.bin_range(d.handle));
           if(!pool.accepts(d.handle, area, d.u)) continue;
           Stream stream(d.stream);
           d.sample = traits_.random_sample(d.item.fragment, stream);
@@ -585,7 +589,7 @@ private:
   // bin: an area that has left them since would be drawn as often as one it no longer is.
   [[noreturn]] void refuse_changed_area(double area, std::pair<double, double> range) const
   {
-    const std::string upper = std::isinf(range.second) ? "inf)" : number_text(range.second) + "]";
+    const std::string upper = number_text(std::isinf(range.second) ? max_child_area_ : range.second) + "]";
     throw Invalid_input("the surface model gave a fragment of area " + number_text(area) +
                         " when it was drawn, outside the range (" + number_text(range.first) + ", " + upper +
                         " of the area it gave when the fragment was stored: area() must return the same "
