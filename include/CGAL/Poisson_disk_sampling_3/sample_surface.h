@@ -205,8 +205,10 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// uses the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2
 /// points); later runs correct d with the slope of log(count) over log(d) measured between runs,
 /// and bisect the bracket of distances that gave too many and too few points when a step would
-/// leave it. One to three full runs, more for small targets and where the first distance is far off
-/// (runs stopped at 2n + 64 points).
+/// leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
+/// from run to run (small targets), the runs draw their darts from other seeds, derived from
+/// `seed`, at a distance that follows their mean count. One to three full runs, more for small
+/// targets and where the first distance is far off (runs stopped at 2n + 64 points).
 template <class Traits>
 std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
                                                    std::size_t max_points, bool parallel, Sampling_statistics& stats)
@@ -238,6 +240,22 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   const std::size_t stop =
       n <= (std::numeric_limits<std::size_t>::max() - 64) / 2 ? (std::min)(max_points, 2 * n + 64) : max_points;
   std::size_t stopped_runs = 0;
+  // the bracket's width (in log d) when it last halved, and the steps since (see below)
+  double reference_width = infinity;
+  int slow_steps = 0;
+  // The count of a maximal set varies from one seed to the next by about 0.25 sqrt(n) (elephant.off
+  // at 100, 1,000 and 10,000 points: benchmark/README.md, change 48), about 0.125 / sqrt(n) in log d
+  // where the count goes as d^-2; below about 600 points that is more than the tolerance. A bracket
+  // narrower than that no longer tells where the target lies: the count at one seed jumps between
+  // a few values as d changes (elephant.off, 100 points with seed 31: 96 or 102 at every distance
+  // the bisection tried). From then on, each run draws another seed (from `reseeds`, derived from
+  // `seed`, so the result stays reproducible) at `noise_center`, moved after each run towards the
+  // target by a step that shrinks as the runs accumulate (a running mean of their counts).
+  const double noise_width = 0.125 / std::sqrt(double(n));
+  double noise_center = 0;
+  int noise_runs = 0;
+  Stream reseeds(seed ^ 0x6c8e9cf570932bd5ull);
+  std::uint64_t run_seed = seed;
   // Up to 24 runs: near the target a run is a draw of a count that varies by a few points from one
   // distance to the next, and for 150 points only 149 to 151 are within tolerance. Large targets
   // take one to three runs (their tolerance is wide) where the first distance is about right;
@@ -245,10 +263,10 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   for(int run = 0; run < 24; ++run) {
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
-        traits, d, seed, max_points, parallel, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
+        traits, d, run_seed, max_points, parallel, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
         false, stop);
+    const double got = complete ? double(samples.size()) : double(stop);
     if(complete) {
-      const double got = double(samples.size());
       if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
         best.swap(samples);
         best_stats = stats;
@@ -278,12 +296,37 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
       last_n = 0;
       d *= (std::max)(double(stop) / double(n), 1.05);
     }
-    // The count is not a monotone function of d (each d draws other darts): near the target, steps
-    // from the slope can swing between two counts on either side. Once the target is bracketed, a
-    // step that leaves the bracket, or lands in its outer eighths, bisects it instead.
-    if(too_many > 0 && too_few < infinity && too_many < too_few) {
-      const double t = std::log(d / too_many) / std::log(too_few / too_many);
-      if(!(t > 0.125 && t < 0.875)) d = std::sqrt(too_many * too_few);
+    if(noise_center > 0) {
+      ++noise_runs;
+      noise_center *= std::pow(got / double(n), 1 / (2. * noise_runs));
+      d = noise_center;
+      run_seed = reseeds.next();
+    } else if(too_many > 0 && too_few < infinity) {
+      // The count is not a monotone function of d (each d draws other darts): near the target,
+      // steps from the slope can swing between counts on either side. Once the target is
+      // bracketed, a step that leaves the bracket bisects it instead, and so does every second
+      // step while the bracket's width has not halved (as in Dekker's method): a step that lands
+      // near one end is often right, where that end is close to the target and the other one far
+      // (a run stopped at a distance twice too small). The width is at most 0 where a larger
+      // distance gave more points than a smaller one.
+      const double width = std::log(too_few / too_many);
+      if(width < 2 * noise_width) {
+        noise_center = d = std::sqrt(too_many * too_few);
+        run_seed = reseeds.next();
+      } else {
+        if(width <= 0.51 * reference_width) {
+          slow_steps = 0;
+          reference_width = width;
+        } else {
+          ++slow_steps;
+        }
+        const double t = std::log(d / too_many) / width;
+        if(!(t > 0 && t < 1) || slow_steps >= 2) {
+          d = std::sqrt(too_many * too_few);
+          slow_steps = 0;
+          reference_width = width;
+        }
+      }
     }
   }
   if(best.empty())
