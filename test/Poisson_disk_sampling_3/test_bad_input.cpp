@@ -249,6 +249,19 @@ TEST(BadInput, DistancesOutsideTheHandledRange)
                  PDS::Invalid_input)
         << e;
   }
+  // A later distance of the search below the precision is named as the search's too: two copies of a
+  // triangle at 10^8 from the origin, where 75 points need 0.096, just above the limit (0.093), and
+  // give about half as many (the engine called the next distance "the minimum distance")
+  {
+    const std::vector<Point> p = {Point(1e8, 0, 0), Point(1e8 + 1, 0, 0), Point(1e8, 1, 0)};
+    const std::vector<std::array<std::size_t, 3>> t = {{0, 1, 2}, {0, 1, 2}};
+    std::vector<Point> out;
+    const std::string what = what_thrown<PDS::Invalid_input>([&] {
+      PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(75));
+    });
+    EXPECT_NE(what.find("the search for 75 points needs a minimum distance of about"), std::string::npos) << what;
+    EXPECT_NE(what.find("too small for the precision"), std::string::npos) << what;
+  }
   {
     Mesh m;
     m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1e-200, 0, 0)), m.add_vertex(Point(0, 1e-200, 0)));

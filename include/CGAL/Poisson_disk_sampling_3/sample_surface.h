@@ -261,6 +261,15 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // take one to three runs (their tolerance is wide) where the first distance is about right;
   // small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
+    if(run > 0) {
+      // named as the search's distance, as the first one is above (the engine would name it as if
+      // the user had given it): where a run gave too few points, the next one may need a distance
+      // below the precision (two copies of a triangle far from the origin, each point counted twice)
+      const std::string tried = "the search for " + std::to_string(n) + " points needs a minimum distance of about " +
+                                number_text(d) + ", which";
+      check_distance_range(d, tried);
+      check_distance_precision(d, traits.position_error(), tried);
+    }
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
