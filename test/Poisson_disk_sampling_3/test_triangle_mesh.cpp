@@ -605,6 +605,40 @@ TEST(MeshSampling, AreasThatRoundToZeroAreSampled)
       EXPECT_LT(widest, 2 * d) << height << " " << d;
     }
   }
+  // Corners of mixed magnitudes whose edges, as rounded, are on one line while the corners are not:
+  // (0, 1), (1, 2^-60) and (2, -1), 2.8 long and 9e-19 wide. The face was skipped as of zero area,
+  // and the set of one sample on the other triangle, 13 from it, certified at 0.1.
+  {
+    const double t = std::ldexp(1., -60);
+    const std::vector<Point> p = {Point(0, 1, 0), Point(1, t, 0), Point(2, -1, 0),
+                                  Point(10, 10, 0), Point(11, 10, 0), Point(10, 11, 0)};
+    const std::vector<std::array<std::size_t, 3>> f = {{0, 1, 2}, {3, 4, 5}};
+    ASSERT_FALSE(CGAL::collinear(p[0], p[1], p[2]));
+    const double d = 0.1;
+    EXPECT_FALSE(PDS::is_maximal_on_polygon_soup(p, f, std::vector<Point>{Point(10.3, 10.3, 0)}, d));
+    typedef PDS::Triangle_sample<K, std::size_t> Sample;
+    std::vector<Sample> out;
+    PDS::sample_polygon_soup_with_locations(p, f, std::back_inserter(out), PDS::parameters::minimum_distance(d));
+    std::vector<Point> points;
+    std::vector<double> x; // the samples on the sliver, along it
+    for(const Sample& s : out) {
+      points.push_back(s.point);
+      if(s.face == 0) {
+        x.push_back(s.point.x());
+        // the sliver's normal, from its corners: (0, 0, -1) (it turns clockwise in the plane z = 0)
+        EXPECT_EQ(s.normal, K::Vector_3(0, 0, -1));
+      }
+    }
+    EXPECT_TRUE(PDS::is_poisson_disk_set(points, d));
+    EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, f, points, d));
+    // independently: the sliver is within 1e-18 of the segment from (0, 1) to (2, -1), so its
+    // samples, sorted along it, must leave no gap of 2 d (in x, 2 d / sqrt(2)), nor d at either end
+    ASSERT_FALSE(x.empty());
+    std::sort(x.begin(), x.end());
+    double widest = 2 * (std::max)(x.front(), 2 - x.back());
+    for(std::size_t i = 1; i < x.size(); ++i) widest = (std::max)(widest, x[i] - x[i - 1]);
+    EXPECT_LT(widest * std::sqrt(2.), 2 * d);
+  }
 }
 
 } // namespace

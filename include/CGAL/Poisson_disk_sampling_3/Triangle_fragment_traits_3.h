@@ -18,6 +18,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -143,6 +144,19 @@ public:
       scale = (std::max)(scale, std::abs(p0[i]) + std::abs(f.e1[i]) + std::abs(f.e2[i]));
     }
     f.area = face_area(f.e1, f.e2);
+    if(f.area == 0) {
+      // The edges as rounded are on one line, but the corners may not be: a face about 1e-16 of its
+      // length wide, or less, whose corners differ in magnitude (corners (0, 1), (1, 2^-60) and
+      // (2, -1), 2.8 long and 9e-19 wide, were skipped by the sampler and by the certificate, which
+      // called a set maximal that left the face 13 from every sample). Its computed points lie
+      // within position_error() of it, as for any face; its area is the smallest positive double,
+      // and its normal, from the corners, is kept aside.
+      const Point n = exact_unit_normal(p0, p1, p2);
+      if(n[0] != 0 || n[1] != 0 || n[2] != 0) {
+        f.area = std::numeric_limits<double>::denorm_min();
+        thin_face_normals_.emplace_back(std::uint32_t(faces_.size()), n);
+      }
+    }
     if(!(f.area <= (std::numeric_limits<double>::max)()))
       throw Invalid_input("triangle " + std::to_string(faces_.size()) +
                           " has an area above the largest double; scale the input");
@@ -176,15 +190,23 @@ public:
 
   /// unit normal of a triangle (right-hand rule on its vertex order), or the zero vector if it has no
   /// area; computed on the edges scaled to unit size, so that a triangle 1e-160 wide, whose cross
-  /// product underflows, has one too
+  /// product underflows, has one too, and from the corners in exact arithmetic for a triangle whose
+  /// edges, as rounded, are on one line
   Point triangle_normal(std::uint32_t face) const
   {
     const Face& f = faces_[face];
     int k;
     Point n = scaled_cross(f.e1, f.e2, k);
     const double l = length(n);
-    if(l > 0)
+    if(l > 0) {
       for(double& c : n) c /= l;
+    } else if(f.area > 0) {
+      const auto it = std::lower_bound(thin_face_normals_.begin(), thin_face_normals_.end(), face,
+                                       [](const std::pair<std::uint32_t, Point>& e, std::uint32_t i) {
+                                         return e.first < i;
+                                       });
+      if(it != thin_face_normals_.end() && it->first == face) n = it->second;
+    }
     return n;
   }
 
@@ -1026,8 +1048,9 @@ private:
   static double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
   // the area of the triangle of edges e1 and e2: half the length of their cross product, computed on
   // the edges scaled by the power of two that brings their largest coordinate to [1, 2), which is
-  // exact, then scaled back. Zero only for edges on one line, decided exactly: where the cross product
-  // rounds to zero, it is computed again in rationals. (Of 200,000 random triples of points on one
+  // exact, then scaled back. Zero only for edges on one line, decided exactly on the edges as given
+  // (add_triangle() decides again on the corners): where the cross product rounds to zero, it is
+  // computed again in rationals. (Of 200,000 random triples of points on one
   // line in decimal, a fifth were not on one line as doubles and had a cross product that rounded to
   // zero: such slivers were skipped, by the sampler and by the certificate alike.) A positive area
   // below the doubles comes out as the smallest positive double, as in area() (the cross product of
@@ -1066,6 +1089,28 @@ private:
     }
     return c;
   }
+  // the unit normal of the triangle (p0, p1, p2), from the cross product of its edges computed in
+  // rationals on the corners and divided by its largest coordinate there; zero for corners on one line
+  static Point exact_unit_normal(const Point& p0, const Point& p1, const Point& p2)
+  {
+    typedef CGAL::Exact_rational ET;
+    ET a[3], b[3], c[3];
+    for(int i = 0; i < 3; ++i) {
+      a[i] = ET(p1[i]) - ET(p0[i]);
+      b[i] = ET(p2[i]) - ET(p0[i]);
+    }
+    ET m = 0;
+    for(int i = 0; i < 3; ++i) {
+      c[i] = a[(i + 1) % 3] * b[(i + 2) % 3] - a[(i + 2) % 3] * b[(i + 1) % 3];
+      if(CGAL::abs(c[i]) > m) m = CGAL::abs(c[i]);
+    }
+    Point n{{0, 0, 0}};
+    if(m == 0) return n;
+    for(int i = 0; i < 3; ++i) n[i] = CGAL::to_double(c[i] / m);
+    const double l = length(n);
+    for(double& x : n) x /= l;
+    return n;
+  }
   // |a|; where its square is not a normal double (a cross product below about 1e-150 or above about
   // 1e150: a triangle smaller than 1e-75 or larger than 1e75), computed on a divided by its largest
   // coordinate, since the square underflows to zero or overflows
@@ -1089,6 +1134,8 @@ private:
   }
 
   std::vector<Face> faces_;
+  // the normals of the faces of positive area whose edges, as rounded, are on one line, by face index
+  std::vector<std::pair<std::uint32_t, Point>> thin_face_normals_;
   double position_error_ = 0;
 };
 
