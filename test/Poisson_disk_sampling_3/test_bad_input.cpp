@@ -122,6 +122,22 @@ TEST(BadInput, ParameterGivenTwice)
             "no exception");
 }
 
+// A seed is an integer from 0 to 2^64 - 1: a negative one was converted (-1 gave the points of
+// 2^64 - 1) and is refused; seeds beyond 2^32 are seeds of their own.
+TEST(BadInput, NegativeSeedsAreRefused)
+{
+  const Mesh m = triangle();
+  EXPECT_THROW(sample(m, PDS::parameters::radius(0.1).random_seed(-1)), PDS::Invalid_input);
+  EXPECT_THROW(sample(m, PDS::parameters::number_of_points(10).random_seed(std::int64_t(-5))), PDS::Invalid_input);
+  std::vector<Point> a, b, c;
+  PDS::sample_triangle_mesh(m, std::back_inserter(a), PDS::parameters::radius(0.05).random_seed(3));
+  PDS::sample_triangle_mesh(m, std::back_inserter(b), PDS::parameters::radius(0.05).random_seed(std::int64_t(3)));
+  PDS::sample_triangle_mesh(m, std::back_inserter(c),
+                            PDS::parameters::radius(0.05).random_seed((std::uint64_t(1) << 40) + 3));
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+}
+
 TEST(BadInput, TooManyPointsIsRefusedBeforeAllocating)
 {
   const Mesh m = triangle(); // area 0.5
@@ -150,9 +166,14 @@ TEST(BadInput, BoundHoldsWhileSampling)
     t.push_back({3 * i, 3 * i + 1, 3 * i + 2});
   }
   std::vector<Point> out;
+  // the statistics say which distance the call was running when it threw (they were all zero)
+  PDS::Sampling_statistics stats;
   EXPECT_THROW(PDS::sample_polygon_soup(p, t, std::back_inserter(out),
-                                        PDS::parameters::minimum_distance(1.).maximum_number_of_points(500)),
+                                        PDS::parameters::minimum_distance(1.).maximum_number_of_points(500).statistics(
+                                            std::ref(stats))),
                PDS::Point_limit_exceeded);
+  EXPECT_EQ(stats.minimum_distance, 1.);
+  EXPECT_EQ(stats.number_of_runs, 1u);
   out.clear();
   PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(1.));
   EXPECT_EQ(out.size(), 1000u);

@@ -122,7 +122,10 @@ public:
   }
 
   /// the bounds of a cell: theta_k = k (pi / 2) / 2^halvings_theta and z_k = k / 2^halvings_z - 1,
-  /// each rounded once (z exactly), so that a bound does not depend on the cell it is computed for
+  /// each rounded once (z exactly), so that a bound does not depend on the cell it is computed for.
+  /// The four octants of a hemisphere end at 2 fl(pi), 2.4e-16 below 2 pi: the band of longitudes
+  /// left out lies within 2.4e-16 R of the last cells, far inside the margin of every coverage test
+  /// (64 eps R or more), so that what covers these cells covers it too
   static Rectangle rectangle(const Fragment& f)
   {
     const double tw = quarter_turn() * internal::power_of_half(f.halvings_theta);

@@ -38,9 +38,10 @@ namespace Poisson_disk_sampling_3 {
 /// (32 bytes); the face is V0 + u (V1 - V0) + v (V2 - V0), and pieces have corners at dyadic (u, v),
 /// so that the corners of fragments have exact dyadic parameters (see `level()`).
 /// Each triangle is rotated to start at its lexicographically smallest corner, so that the samples
-/// depend on the geometry only, not on which corner a mesh data structure lists first (`Surface_mesh`
-/// and `Polyhedron_3` give the same points); `barycentric_coordinates()` maps back to the order in
-/// which the corners were given.
+/// do not depend on which corner a mesh data structure lists first (`Surface_mesh` and `Polyhedron_3`
+/// give the same points); they do depend on the order of the triangles and on the orientation of each
+/// (its corners' cyclic order); `barycentric_coordinates()` maps back to the order in which the
+/// corners were given.
 ///
 /// Long thin triangles: subdivision keeps a triangle's shape, so a face L long and w wide would be cut
 /// into slivers as thin as the face, about (L / D)^2 of them around a face narrower than D. With a

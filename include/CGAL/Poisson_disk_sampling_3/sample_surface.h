@@ -25,7 +25,11 @@ namespace CGAL {
 namespace Poisson_disk_sampling_3 {
 
 /// \ingroup PkgPoissonDiskSampling3Ref
-/// What a sampling call did; filled when passed as `statistics(std::ref(s))`.
+/// What a sampling call did; filled when passed as `statistics(std::ref(s))`. After an exception
+/// thrown while sampling (`Point_limit_exceeded`), `minimum_distance` and `number_of_runs` are those
+/// of the run that threw, and the other members those of the run before it in a `number_of_points`
+/// search (zero otherwise); after `Target_not_reached`, those of the search's last run, with
+/// `number_of_runs` and `stopped_runs` counting all its runs.
 struct Sampling_statistics
 {
   double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
@@ -143,11 +147,20 @@ Size_request read_size(const NamedParameters& np)
   return s;
 }
 
+/// the `random_seed` parameter: an integer from 0 to 2^64 - 1 (a negative one is refused: converted,
+/// -1 would be the same seed as 2^64 - 1; a floating-point one does not compile, rather than lose its
+/// fraction)
 template <class NamedParameters>
 std::uint64_t read_seed(const NamedParameters& np)
 {
-  return std::uint64_t(CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::random_seed), 0u));
+  const auto seed = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  typedef std::decay_t<decltype(seed)> Seed;
+  static_assert(std::is_integral<Seed>::value && !std::is_same<Seed, bool>::value,
+                "random_seed takes an integer from 0 to 2^64 - 1");
+  if constexpr(std::is_signed<Seed>::value)
+    if(seed < 0) throw Invalid_input("random_seed must not be negative (" + std::to_string(seed) + ")");
+  return std::uint64_t(seed);
 }
 
 template <class NamedParameters>
@@ -191,9 +204,10 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   engine.set_expected_count_check(check_expected_count);
   engine.set_parallel(parallel);
   engine.set_sample_stop(sample_stop);
-  const Engine_statistics e = engine.run(emit);
+  // filled first: a run that throws (Point_limit_exceeded) leaves its distance and the runs counted
   stats.minimum_distance = d;
   ++stats.number_of_runs;
+  const Engine_statistics e = engine.run(emit);
   stats.darts = e.darts;
   stats.dropped_fragments = e.dropped_at_max_depth;
   stats.darts_on_covered_fragments = e.darts_on_covered;
