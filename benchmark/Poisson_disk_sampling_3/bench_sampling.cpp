@@ -296,7 +296,8 @@ void count_mode_case(benchmark::State& state, const std::string& name)
   if(!validate(state, m, points, stats.minimum_distance)) return;
   std::vector<Point> again;
   const auto start = std::chrono::steady_clock::now();
-  PDS::sample_triangle_mesh(m, std::back_inserter(again), PDS::parameters::minimum_distance(stats.minimum_distance));
+  PDS::sample_triangle_mesh(m, std::back_inserter(again),
+                            PDS::parameters::minimum_distance(stats.minimum_distance).random_seed(stats.random_seed));
   const double radius_seconds = seconds_since(start);
   state.counters["points"] = double(points.size());
   state.counters["runs"] = double(stats.number_of_runs);

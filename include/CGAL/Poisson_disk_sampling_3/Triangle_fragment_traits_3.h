@@ -133,6 +133,7 @@ public:
     if(faces_.size() >= std::numeric_limits<std::uint32_t>::max())
       throw Invalid_input("too many triangles (at most 2^32 - 1)");
     Face f;
+    Point thin_normal{{0, 0, 0}};
     f.first = std::uint8_t(q1 < q0 ? (q2 < q1 ? 2 : 1) : (q2 < q0 ? 2 : 0));
     const Point& p0 = *q[f.first];
     const Point& p1 = *q[(f.first + 1) % 3];
@@ -150,13 +151,11 @@ public:
       // length wide, or less, whose corners differ in magnitude (corners (0, 1), (1, 2^-60) and
       // (2, -1), 2.8 long and 9e-19 wide, were skipped by the sampler and by the certificate, which
       // called a set maximal that left the face 13 from every sample). Its computed points lie
-      // within position_error() of it, as for any face; its area is the smallest positive double,
-      // and its normal, from the corners, is kept aside.
-      const Point n = exact_unit_normal(p0, p1, p2);
-      if(n[0] != 0 || n[1] != 0 || n[2] != 0) {
-        f.area = std::numeric_limits<double>::denorm_min();
-        thin_face_normals_.emplace_back(std::uint32_t(faces_.size()), n);
-      }
+      // within position_error() of it, as for any face; its area and its normal come from the
+      // corners (the area at least the smallest positive double), the normal kept aside.
+      double area = 0;
+      thin_normal = exact_unit_normal(p0, p1, p2, area);
+      if(area > 0) f.area = area;
     }
     if(!(f.area <= (std::numeric_limits<double>::max)()))
       throw Invalid_input("triangle " + std::to_string(faces_.size()) +
@@ -165,6 +164,8 @@ public:
     // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
     position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
     faces_.push_back(f);
+    if(thin_normal[0] != 0 || thin_normal[1] != 0 || thin_normal[2] != 0)
+      thin_face_normals_.emplace_back(std::uint32_t(faces_.size() - 1), thin_normal);
     return std::uint32_t(faces_.size() - 1);
   }
 
@@ -1091,8 +1092,9 @@ private:
     return c;
   }
   // the unit normal of the triangle (p0, p1, p2), from the cross product of its edges computed in
-  // rationals on the corners and divided by its largest coordinate there; zero for corners on one line
-  static Point exact_unit_normal(const Point& p0, const Point& p1, const Point& p2)
+  // rationals on the corners and divided by its largest coordinate there, and its area (at least the
+  // smallest positive double); zero for corners on one line
+  static Point exact_unit_normal(const Point& p0, const Point& p1, const Point& p2, double& area)
   {
     typedef CGAL::Exact_rational ET;
     ET a[3], b[3], c[3];
@@ -1106,9 +1108,11 @@ private:
       if(CGAL::abs(c[i]) > m) m = CGAL::abs(c[i]);
     }
     Point n{{0, 0, 0}};
+    area = 0;
     if(m == 0) return n;
     for(int i = 0; i < 3; ++i) n[i] = CGAL::to_double(c[i] / m);
     const double l = length(n);
+    area = (std::max)(0.5 * CGAL::to_double(m) * l, std::numeric_limits<double>::denorm_min());
     for(double& x : n) x /= l;
     return n;
   }

@@ -27,12 +27,17 @@ namespace Poisson_disk_sampling_3 {
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// What a sampling call did; filled when passed as `statistics(std::ref(s))`. After an exception
 /// thrown while sampling (`Point_limit_exceeded`), `minimum_distance` and `number_of_runs` are those
-/// of the run that threw, and the other members those of the run before it in a `number_of_points`
-/// search (zero otherwise); after `Target_not_reached`, those of the search's last run, with
-/// `number_of_runs` and `stopped_runs` counting all its runs.
+/// of the run that threw, `stopped_runs` those stopped before it, and the other members those of the
+/// run before it in a `number_of_points` search (zero otherwise); after `Invalid_input` for a later
+/// distance of the search, those of its last run; after `Target_not_reached`, those of the search's
+/// last run, with `number_of_runs` and `stopped_runs` counting all its runs.
 struct Sampling_statistics
 {
   double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
+  /// the seed of the run whose points were written: `random_seed`, or for a `number_of_points`
+  /// search whose last runs drew their darts from seeds derived from it (small targets), that run's;
+  /// the radius mode at `minimum_distance` with this seed gives the same points
+  std::uint64_t random_seed = 0;
   /// dart-throwing runs: 1, or the search's runs for `number_of_points`, among which `stopped_runs`
   std::size_t number_of_runs = 0;
   /// runs of a `number_of_points` search for N points stopped at 2N + 64 samples, or at
@@ -206,6 +211,7 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   engine.set_sample_stop(sample_stop);
   // filled first: a run that throws (Point_limit_exceeded) leaves its distance and the runs counted
   stats.minimum_distance = d;
+  stats.random_seed = seed;
   ++stats.number_of_runs;
   const Engine_statistics e = engine.run(emit);
   stats.darts = e.darts;
@@ -261,8 +267,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // at 100, 1,000 and 10,000 points: benchmark/README.md, change 48), about 0.125 / sqrt(n) in log d
   // where the count goes as d^-2; below about 600 points that is more than the tolerance. A bracket
   // narrower than that no longer tells where the target lies: the count at one seed jumps between
-  // a few values as d changes (elephant.off, 100 points with seed 31: 96 or 102 at every distance
-  // the bisection tried). From then on, each run draws another seed (from `reseeds`, derived from
+  // a few values as d changes, and the bisection settled where it jumps over the target (elephant.off,
+  // seeds 350 and 427 for 100 points). From then on, each run draws another seed (from `reseeds`, derived from
   // `seed`, so the result stays reproducible) at `noise_center`, moved after each run towards the
   // target by a step that shrinks as the runs accumulate (a running mean of their counts).
   const double noise_width = 0.125 / std::sqrt(double(n));
@@ -288,7 +294,9 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
         false, stop);
-    const double got = complete ? double(samples.size()) : double(stop);
+    // a stopped run made more than `stop` points, at least 5% more than n (`stop` is at least n; with
+    // a bound at n, taking `stop` would leave the distance of the runs below where it is)
+    const double got = complete ? double(samples.size()) : (std::max)(double(stop), 1.05 * double(n));
     if(complete) {
       if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
         best.swap(samples);
@@ -327,8 +335,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     } else if(too_many > 0 && too_few < infinity) {
       // The count is not a monotone function of d (each d draws other darts): near the target,
       // steps from the slope can swing between counts on either side. Once the target is
-      // bracketed, a step that leaves the bracket bisects it instead, and so does every second
-      // step while the bracket's width has not halved (as in Dekker's method): a step that lands
+      // bracketed, a step that leaves the bracket bisects it instead, and so does the step after
+      // two that have not halved the bracket's width (as in Brent's method): a step that lands
       // near one end is often right, where that end is close to the target and the other one far
       // (a run stopped at a distance twice too small). The width is at most 0 where a larger
       // distance gave more points than a smaller one.
@@ -444,14 +452,14 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed}
 ///     \cgalParamDescription{the seed: the same seed and input give the same samples}
-///     \cgalParamType{unsigned int}
+///     \cgalParamType{an integer type, from 0 to 2^64 - 1 (a negative value is refused)}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the output iterator past the last sample
-/// \throws Invalid_input for a bad size (among which a minimum distance outside 2^-400 to 2^400) or a
-///         surface with no area, before any sample is written; and while sampling, for a model that
+/// \throws Invalid_input for a bad size (among which a minimum distance outside 2^-400 to 2^400), a
+///         negative seed or a surface with no area, before any sample is written; and while sampling, for a model that
 ///         breaks the rules of `SurfaceFragmentTraits_3` the engine checks (an area that is not a
 ///         number or negative, a fragment larger than the largest initial one, an area that changed
 ///         between the calls of `area()`, 2^30 refused darts in a row), after which `out` may have
