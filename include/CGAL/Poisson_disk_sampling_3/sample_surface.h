@@ -267,10 +267,11 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // at 100, 1,000 and 10,000 points: benchmark/README.md, change 48), about 0.125 / sqrt(n) in log d
   // where the count goes as d^-2; below about 600 points that is more than the tolerance. A bracket
   // narrower than that no longer tells where the target lies: the count at one seed jumps between
-  // a few values as d changes, and the bisection settled where it jumps over the target (elephant.off,
-  // seeds 350 and 427 for 100 points). From then on, each run draws another seed (from `reseeds`, derived from
-  // `seed`, so the result stays reproducible) at `noise_center`, moved after each run towards the
-  // target by a step that shrinks as the runs accumulate (a running mean of their counts).
+  // a few values as d changes, and the bisection settled where it jumps over the target
+  // (elephant.off, seeds 350 and 427 for 100 points). From then on, each run draws another seed
+  // (from `reseeds`, derived from `seed`, so the result stays reproducible) at `noise_center`, moved
+  // after each run towards the target by a step that shrinks as the runs accumulate (a running mean
+  // of their counts).
   const double noise_width = 0.125 / std::sqrt(double(n));
   double noise_center = 0;
   int noise_runs = 0;
@@ -292,8 +293,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     }
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
-        traits, d, run_seed, max_points, parallel, stats, [&](const typename Traits::Sample& s) { samples.push_back(s); },
-        false, stop);
+        traits, d, run_seed, max_points, parallel, stats,
+        [&](const typename Traits::Sample& s) { samples.push_back(s); }, false, stop);
     // a stopped run made more than `stop` points, at least 5% more than n (`stop` is at least n; with
     // a bound at n, taking `stop` would leave the distance of the runs below where it is)
     const double got = complete ? double(samples.size()) : (std::max)(double(stop), 1.05 * double(n));
@@ -459,11 +460,11 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///
 /// \returns the output iterator past the last sample
 /// \throws Invalid_input for a bad size (among which a minimum distance outside 2^-400 to 2^400), a
-///         negative seed or a surface with no area, before any sample is written; and while sampling, for a model that
-///         breaks the rules of `SurfaceFragmentTraits_3` the engine checks (an area that is not a
-///         number or negative, a fragment larger than the largest initial one, an area that changed
-///         between the calls of `area()`, 2^30 refused darts in a row), after which `out` may have
-///         received some samples.
+///         negative seed or a surface with no area, before any sample is written; and while sampling,
+///         for a model that breaks the rules of `SurfaceFragmentTraits_3` the engine checks (an area
+///         that is not a number or negative, a fragment larger than the largest initial one, an area
+///         that changed between the calls of `area()`, 2^30 refused darts in a row), after which `out`
+///         may have received some samples.
 /// \throws Point_limit_exceeded when the bound is exceeded: before any sample is written for the
 ///         estimate, while sampling a radius request for the actual count (a surface that needs more
 ///         samples than its area predicts) and for a model whose fragments in wait outnumber the bound of
