@@ -240,13 +240,6 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   check_surface_area(area, "sample");
   const double tolerance = (std::max)(1., 0.01 * double(n));
   double d = std::sqrt(0.6965 * area / double(n));
-  // checked here: the engine would name the distance as if the user had given it (or, where it
-  // underflows to 0, call it not positive)
-  const std::string first_distance = "about " + std::to_string(n) + " points on a surface of area " +
-                                     number_text(area) + " need a minimum distance of about " + number_text(d) +
-                                     ", which";
-  check_distance_range(d, first_distance);
-  check_distance_precision(d, traits.position_error(), first_distance);
   double slope = -2, last_d = 0, last_n = 0;
   const double infinity = std::numeric_limits<double>::infinity();
   double too_many = 0, too_few = infinity;
@@ -282,15 +275,17 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // take one to three runs (their tolerance is wide) where the first distance is about right;
   // small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
-    if(run > 0) {
-      // named as the search's distance, as the first one is above (the engine would name it as if
-      // the user had given it): where a run gave too few points, the next one may need a distance
-      // below the precision (two copies of a triangle far from the origin, each point counted twice)
-      const std::string tried = "the search for " + std::to_string(n) + " points needs a minimum distance of about " +
-                                number_text(d) + ", which";
-      check_distance_range(d, tried);
-      check_distance_precision(d, traits.position_error(), tried);
-    }
+    // Each distance is checked here, named as the search's: the engine would name it as if the user
+    // had given it (or, where the first estimate underflows to 0, call it not positive). Where a run
+    // gave too few points, the next one may need a distance below the precision (two copies of a
+    // triangle far from the origin, each point counted twice).
+    const std::string tried =
+        run == 0 ? "about " + std::to_string(n) + " points on a surface of area " + number_text(area) +
+                       " need a minimum distance of about " + number_text(d) + ", which"
+                 : "the search for " + std::to_string(n) + " points needs a minimum distance of about " +
+                       number_text(d) + ", which";
+    check_distance_range(d, tried);
+    check_distance_precision(d, traits.position_error(), tried);
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats,
