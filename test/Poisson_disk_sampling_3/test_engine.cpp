@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "fragment_checks.h"
+#include "square_traits.h"
 
 #include <algorithm>
 #include <atomic>
@@ -248,46 +249,7 @@ TEST(ActiveFragmentPool, BatchRemovesExactlyTheTakenOnes)
   EXPECT_EQ(left, expected);
 }
 
-// A flat unit square in the plane z = 0, split into four squares; optionally refusing half of its
-// darts, as a model that samples with rejection does.
-class Square_traits
-{
-public:
-  typedef std::array<double, 3> Point;
-  struct Fragment { double x, y, size; };
-  struct Sample { Point point; };
-
-  explicit Square_traits(bool refuse_half = false) : refuse_half_(refuse_half) {}
-
-  template <class Out> Out initial_fragments(Out out) const { *out++ = Fragment{0, 0, 1}; return out; }
-  double area(const Fragment& f) const { return f.size * f.size; }
-  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const
-  {
-    if(refuse_half_ && rng.uniform() < 0.5) return std::nullopt;
-    return Sample{{{f.x + f.size * rng.uniform(), f.y + f.size * rng.uniform(), 0.}}};
-  }
-  const Point& point(const Sample& s) const { return s.point; }
-  Point reference_point(const Fragment& f) const { return {{f.x + f.size / 2, f.y + f.size / 2, 0.}}; }
-  bool is_covered(const Fragment& f, const Point& c, double radius) const
-  {
-    const double r = radius - 4 * position_error();
-    for(double x : {f.x, f.x + f.size})
-      for(double y : {f.y, f.y + f.size})
-        if((x - c[0]) * (x - c[0]) + (y - c[1]) * (y - c[1]) + c[2] * c[2] > r * r * (1 - 1e-15)) return false;
-    return true;
-  }
-  template <class Out> Out split(const Fragment& f, Out out) const
-  {
-    const double h = f.size / 2;
-    for(double dx : {0., h})
-      for(double dy : {0., h}) *out++ = Fragment{f.x + dx, f.y + dy, h};
-    return out;
-  }
-  double position_error() const { return 1e-15; }
-
-private:
-  bool refuse_half_;
-};
+using pds_test::Square_traits;
 
 // the point of a root triangle fragment at parameters (u, v), through the model's own operations:
 // the reference point (centroid) of a tiny fragment whose corner is (u, v)
@@ -358,6 +320,28 @@ TEST(Engine, ThreadsGiveTheSamePointsOnAUserModel)
     EXPECT_GT(sequential.size(), 20000u);
     for(std::size_t i = 0; i < sequential.size(); ++i) ASSERT_EQ(parallel[i].point, sequential[i].point) << i;
   }
+}
+
+// The engine's members depend on CGAL_LINKED_WITH_TBB and CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES.
+// engine_variant.cpp, linked into this program, is compiled with neither TBB nor this unit's lack
+// of stage times, and runs the engine's run() for the same model and output type: each unit must
+// run its own (with one definition for both, one of them runs the other's, and the times say so).
+TEST(Engine, UnitsCompiledWithOtherMacrosEachRunTheirOwnEngine)
+{
+#ifdef CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES
+  FAIL() << "test_engine.cpp is compiled without CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES";
+#endif
+  const Square_traits square;
+  PDS::internal::Dart_throwing_engine<Square_traits> engine(square, 0.05, 9, 10000);
+  engine.set_parallel(true);
+  pds_test::Variant_run here;
+  const auto statistics = engine.run(pds_test::Point_collector{&here.points});
+  for(double seconds : statistics.stage_seconds) here.stage_seconds += seconds;
+  const pds_test::Variant_run there = pds_test::run_in_variant_unit(9);
+  EXPECT_EQ(here.stage_seconds, 0.) << "this unit's engine read the clock";
+  EXPECT_GT(there.stage_seconds, 0.) << "engine_variant.cpp's engine did not read the clock";
+  EXPECT_GT(here.points.size(), 200u);
+  EXPECT_EQ(here.points, there.points) << "the two units' engines gave different samples";
 }
 
 // A model may write its roots as any output iterator allows, here by assigning the iterator that

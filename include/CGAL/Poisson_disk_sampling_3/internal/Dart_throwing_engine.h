@@ -67,10 +67,32 @@ inline const char* engine_stage_name(int stage)
   return names[stage];
 }
 
+// Stage_clock's members and the engine's depend on two macros, CGAL_LINKED_WITH_TBB (the threads'
+// scratch) and CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES (the clock). Each combination has an inline
+// namespace of its own, so that translation units compiled with different ones and linked into one
+// program each keep their own classes (one definition rule): a library built without TBB and a
+// program built with it, say. With one name for both layouts, the linker would keep one copy of each
+// member function, and code compiled for one layout would run on objects of the other.
+#ifdef CGAL_LINKED_WITH_TBB
+#ifdef CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT with_tbb_timed
+#else
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT with_tbb
+#endif
+#else
+#ifdef CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT sequential_timed
+#else
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT sequential
+#endif
+#endif
+
+inline namespace CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT {
+
 /// Times each stage of the batches, with the clock read between stages, when the macro
 /// `CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES` is defined before this header is included (as the
 /// profile `benchmark/Poisson_disk_sampling_3/bench_stages.cpp` does); otherwise it is empty and
-/// costs nothing. A program defines the macro in all of its translation units or in none.
+/// costs nothing. Translation units compiled with and without it may be linked together (see above).
 class Stage_clock
 {
 public:
@@ -635,6 +657,10 @@ private:
   std::uint64_t refusal_limit_ = std::uint64_t(1) << 30;
   std::size_t sample_stop_ = std::size_t(-1);
 };
+
+} // inline namespace CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT
+
+#undef CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT
 
 } // namespace internal
 } // namespace Poisson_disk_sampling_3
