@@ -148,6 +148,15 @@ TEST(BadInput, TooManyPointsIsRefusedBeforeAllocating)
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(200000000)), PDS::Point_limit_exceeded);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.)
       << "refusals must not do the work first";
+  // the estimate in the message: a whole number, or where that is not above the bound (it said
+  // "about 100 ... exceeds maximum_number_of_points (100)"), the digits that show it is
+  auto refusal = [&](double r) {
+    return what_thrown<PDS::Point_limit_exceeded>(
+        [&] { sample(m, PDS::parameters::radius(r).maximum_number_of_points(100)); });
+  };
+  EXPECT_NE(refusal(0.01).find("(about 1591, "), std::string::npos) << refusal(0.01);
+  const double r = std::sqrt(0.5 / (3.14159265358979323846 * 100.4));
+  EXPECT_NE(refusal(r).find("(about 100.4, "), std::string::npos) << refusal(r);
   // within the bound it works
   std::vector<Point> out;
   PDS::sample_triangle_mesh(m, std::back_inserter(out), PDS::parameters::radius(0.05).maximum_number_of_points(100));

@@ -120,6 +120,9 @@ TEST(SphereSampling, DiameterAndBeyondGiveOnePoint)
       ASSERT_EQ(points.size(), 1u) << c.d << " " << seed;
       EXPECT_NEAR(std::sqrt(CGAL::squared_distance(points[0], c.center)), c.radius, 1e-15 * c.radius);
       EXPECT_EQ(stats.minimum_distance, c.d);
+      EXPECT_EQ(stats.random_seed, seed);
+      EXPECT_EQ(stats.number_of_runs, 1u);
+      EXPECT_GE(stats.darts, 1u);
       PDS::sample_sphere(sphere, std::back_inserter(again), PDS::parameters::minimum_distance(c.d).random_seed(seed));
       EXPECT_EQ(again, points);
       if(c.d >= 2 * c.radius * (1 + 1e-14)) EXPECT_TRUE(PDS::is_maximal(sphere, points, c.d)) << c.d;
@@ -136,6 +139,24 @@ TEST(SphereSampling, DiameterAndBeyondGiveOnePoint)
   EXPECT_THROW(PDS::sample_sphere(unit, std::back_inserter(points),
                                   PDS::parameters::minimum_distance(2).maximum_number_of_points(3)),
                PDS::Point_limit_exceeded);
+  // A search for one or two points starts above 2R (sqrt(0.6965 area / n) is 2.96 R and 2.09 R) and
+  // writes one point: the radius mode at the distance and seed of its statistics gives that point
+  // (the engine's first sample; it was drawn from other random numbers there). For three points,
+  // below 2R, as on any surface.
+  for(std::size_t n : {1, 2, 3})
+    for(unsigned seed : {0u, 1u, 2u, 3u}) {
+      std::vector<Point> counted, replayed;
+      PDS::Sampling_statistics stats;
+      PDS::sample_sphere(unit, std::back_inserter(counted),
+                         PDS::parameters::number_of_points(n).random_seed(seed).statistics(std::ref(stats)));
+      if(n < 3) {
+        ASSERT_GE(stats.minimum_distance, 2.) << n;
+        EXPECT_EQ(counted.size(), 1u) << n;
+      }
+      PDS::sample_sphere(unit, std::back_inserter(replayed),
+                         PDS::parameters::minimum_distance(stats.minimum_distance).random_seed(stats.random_seed));
+      EXPECT_EQ(replayed, counted) << n << " " << seed;
+    }
   points.clear();
   PDS::sample_sphere(unit, std::back_inserter(points),
                      PDS::parameters::minimum_distance(std::nextafter(2., 0.)).random_seed(0));

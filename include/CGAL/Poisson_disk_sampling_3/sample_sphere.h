@@ -36,43 +36,6 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
       std::sqrt(squared_radius));
 }
 
-// A minimum distance of the sphere's diameter or more: one point covers the sphere, but the point of the
-// sphere farthest from it, its antipode, is 2R away, within the rounding of the coverage tests of d
-// from d = 2R to about 2R (1 + 2 10^-15). There the engine can prove no fragment around the antipode
-// covered, and refined a cap around it down to its depth floor, until the bound on the fragments in
-// wait stopped it (Point_limit_exceeded, after 1.5 s). The set is one uniform point, drawn as the
-// engine draws a dart (an octant, then a point of it), though not from the same random numbers.
-// Returns false, and does nothing, for a smaller distance or a number_of_points request (whose search
-// starts above 2R for one or two points, and below 2R for more).
-template <class NamedParameters, class Emit>
-bool sample_beyond_diameter(const Sphere_fragment_traits_3& traits, const NamedParameters& np, Emit&& emit)
-{
-  const Size_request size = read_size(np);
-  const double d = size.minimum_distance;
-  if(size.number_of_points > 0 || d < 2 * traits.radius()) return false;
-  const std::size_t max_points = read_max_points(np);
-  // the engine's checks, in its order
-  check_distance_range(d);
-  check_distance_precision(d, traits.position_error());
-  const double area = total_area(traits);
-  check_surface_area(area, "sample");
-  check_expected_count(area, d, max_points);
-  Sampling_statistics local;
-  Sampling_statistics& stats = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
-  stats = Sampling_statistics();
-  stats.minimum_distance = d;
-  stats.number_of_runs = 1;
-  stats.darts = 1;
-  // the eight octants have the same area
-  std::vector<Sphere_fragment_traits_3::Fragment> octants;
-  traits.initial_fragments(std::back_inserter(octants));
-  Random rng(read_seed(np));
-  const Sphere_fragment_traits_3::Fragment octant = octants[std::size_t(rng.uniform_index(octants.size()))];
-  emit(*traits.random_sample(octant, rng));
-  return true;
-}
-
 } // namespace internal
 
 /// \ingroup PkgPoissonDiskSampling3Ref
@@ -90,8 +53,8 @@ bool sample_beyond_diameter(const Sphere_fragment_traits_3& traits, const NamedP
 ///
 /// A minimum distance of the diameter 2R or more gives one uniform point: every point of the sphere
 /// is within 2R of it. Up to about 2R (1 + 2 10^-15), the antipode's distance 2R is within the
-/// rounding of d, and `is_maximal()` answers such a set undecided. (This is the one case where
-/// `sample_sphere()` does not run the engine of `sample_surface()`.)
+/// rounding of d, and `is_maximal()` answers such a set undecided. (There the engine of
+/// `sample_surface()` returns after its first sample, without proving the sphere covered.)
 ///
 /// \returns the output iterator past the last point
 /// \throws Invalid_input for a sphere whose squared radius is not positive and finite as a double, a
@@ -106,7 +69,13 @@ PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIt
   auto emit = [&](const Sphere_fragment_traits_3::Sample& s) {
     *out++ = internal::output_point<typename K::Point_3>(s.point);
   };
-  if(!internal::sample_beyond_diameter(traits, np, emit)) internal::sample_request(traits, np, emit);
+  // From the diameter up, one point covers the sphere, but the point of the sphere farthest from it,
+  // its antipode, is 2R away, within the rounding of the coverage tests of d from d = 2R to about
+  // 2R (1 + 2 10^-15): there the engine could prove no fragment around the antipode covered, and
+  // refined a cap around it down to its depth floor, until the bound on the fragments in wait
+  // stopped it (Point_limit_exceeded, after 1.5 s); far above, the tests overflowed. So runs at 2R
+  // or more return after their first sample.
+  internal::sample_request(traits, np, emit, 2 * traits.radius());
   return out;
 }
 

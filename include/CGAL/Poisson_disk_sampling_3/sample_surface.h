@@ -199,16 +199,19 @@ constexpr bool read_parallel()
 /// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted. With
 /// `check_expected_count` false, the run does not refuse the distance up front (see
 /// `Dart_throwing_engine::set_expected_count_check()`). Returns false if the run stopped at
-/// `sample_stop` samples, not maximal (see `Dart_throwing_engine::set_sample_stop()`).
+/// `sample_stop` samples, not maximal (see `Dart_throwing_engine::set_sample_stop()`). With
+/// `first_sample_only`, the run returns after its first sample (see
+/// `Dart_throwing_engine::set_first_sample_only()`).
 template <class Traits, class Emit>
 bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points, bool parallel,
                 Sampling_statistics& stats, Emit&& emit, bool check_expected_count = true,
-                std::size_t sample_stop = std::size_t(-1))
+                std::size_t sample_stop = std::size_t(-1), bool first_sample_only = false)
 {
   Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
   engine.set_expected_count_check(check_expected_count);
   engine.set_parallel(parallel);
   engine.set_sample_stop(sample_stop);
+  engine.set_first_sample_only(first_sample_only);
   // filled first: a run that throws (Point_limit_exceeded) leaves its distance and the runs counted
   stats.minimum_distance = d;
   stats.random_seed = seed;
@@ -228,10 +231,12 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
 /// from run to run (small targets), the runs draw their darts from other seeds, derived from
 /// `seed`, at a distance that follows their mean count. One to three full runs, more for small
-/// targets and where the first distance is far off (runs stopped at 2n + 64 points).
+/// targets and where the first distance is far off (runs stopped at 2n + 64 points). Runs at
+/// `covering_distance` or more return after their first sample, as in `sample_request()`.
 template <class Traits>
 std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
-                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats)
+                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats,
+                                                   double covering_distance)
 {
   if(n > max_points)
     throw Point_limit_exceeded("number_of_points (" + std::to_string(n) +
@@ -289,7 +294,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats,
-        [&](const typename Traits::Sample& s) { samples.push_back(s); }, false, stop);
+        [&](const typename Traits::Sample& s) { samples.push_back(s); }, false, stop, d >= covering_distance);
     // a stopped run made more than `stop` points, at least 5% more than n (`stop` is at least n; with
     // a bound at n, taking `stop` would leave the distance of the runs below where it is)
     const double got = complete ? double(samples.size()) : (std::max)(double(stop), 1.05 * double(n));
@@ -370,9 +375,12 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
 
 /// Runs a size request and calls `emit(sample)` for each sample; fills the `statistics` parameter if
 /// given. A radius request streams the samples as they are accepted (no copy of the set is kept); a
-/// `number_of_points` request keeps the best run's samples until the search ends.
+/// `number_of_points` request keeps the best run's samples until the search ends. Runs at
+/// `covering_distance` or more, at which any sample covers the whole surface (a sphere's diameter),
+/// return after their first sample (see `Dart_throwing_engine::set_first_sample_only()`).
 template <class Traits, class NamedParameters, class Emit>
-void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit)
+void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit,
+                    double covering_distance = std::numeric_limits<double>::infinity())
 {
   const Size_request size = read_size(np);
   const std::uint64_t seed = read_seed(np);
@@ -383,10 +391,13 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
       CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
   stats = Sampling_statistics();
   if(size.number_of_points > 0) {
-    for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, parallel, stats)) emit(s);
+    for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, parallel, stats,
+                                      covering_distance))
+      emit(s);
     return;
   }
-  run_engine(traits, size.minimum_distance, seed, max_points, parallel, stats, emit);
+  run_engine(traits, size.minimum_distance, seed, max_points, parallel, stats, emit, true, std::size_t(-1),
+             size.minimum_distance >= covering_distance);
 }
 
 } // namespace internal
@@ -394,7 +405,7 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Generates a maximal Poisson-disk sample set on the surface described by `traits`, by the optimized
 /// dart throwing of the paper's Section 3. Every other sampling function of the package is a facade
-/// over this one (but `sample_sphere()` at a distance of its diameter or more, see there).
+/// over this one.
 ///
 /// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
 /// @tparam SampleOutputIterator an output iterator accepting `SurfaceFragmentTraits::Sample`

@@ -22,6 +22,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -130,11 +132,24 @@ inline void check_expected_count(double total_area, double minimum_distance, std
 {
   const double r = 0.5 * minimum_distance;
   const double expected = total_area / (3.14159265358979323846 * r * r);
-  if(!(expected <= double(max_points)))
-    throw Point_limit_exceeded("the expected number of points (about " +
-                               (expected < 1e18 ? std::to_string(std::uint64_t(expected)) : number_text(expected)) +
-                               ", area / (pi r^2)) exceeds maximum_number_of_points (" +
-                               std::to_string(max_points) + "); use a larger radius or raise the bound");
+  if(expected <= double(max_points)) return;
+  std::string count;
+  if(!(expected < 1e18)) {
+    count = number_text(expected);
+  } else if(std::uint64_t(expected) > max_points) {
+    count = std::to_string(std::uint64_t(expected));
+  } else {
+    // above the bound by less than one point (4.43 for a bound of 4): the digits that show it
+    char text[32];
+    for(int digits = 3; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof(text), "%.*g", digits, expected);
+      if(std::strtod(text, nullptr) > double(max_points)) break;
+    }
+    count = text;
+  }
+  throw Point_limit_exceeded("the expected number of points (about " + count +
+                             ", area / (pi r^2)) exceeds maximum_number_of_points (" + std::to_string(max_points) +
+                             "); use a larger radius or raise the bound");
 }
 
 /// The loop of the paper's Section 3.1 over any model of SurfaceFragmentTraits_3.
@@ -179,6 +194,12 @@ public:
   /// the first `samples` (by default, never): the samples written are then not a maximal set. A count
   /// search uses it to cut short a run that makes far more samples than it looks for.
   void set_sample_stop(std::size_t samples) { sample_stop_ = samples; }
+
+  /// Makes `run()` return once it has accepted its first sample (by default, no): for a distance at
+  /// which any sample covers the whole surface, where the coverage tests cannot always prove it (on a
+  /// sphere at its diameter or more, the antipode is 2R away: see sample_sphere.h). The sample is the
+  /// one a full run accepts first for the same seed.
+  void set_first_sample_only(bool first_only) { first_sample_only_ = first_only; }
 
   /// Throws darts until the surface is covered; calls `output(sample)` for each accepted sample.
   template <class SampleOutput>
@@ -371,6 +392,7 @@ public:
         d.accepted = true;
         ++stats.samples;
         output(*d.sample);
+        if(first_sample_only_) return stats;
       }
       // nothing reads the buckets again before the next batch: the batch's samples go in together
       clock.lap(stats.stage_seconds[accept_stage]);
@@ -656,6 +678,7 @@ private:
   double max_child_area_ = 0; // set by run()
   std::uint64_t refusal_limit_ = std::uint64_t(1) << 30;
   std::size_t sample_stop_ = std::size_t(-1);
+  bool first_sample_only_ = false;
 };
 
 } // inline namespace CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT
