@@ -5,6 +5,12 @@
 
 #include "test_support.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Simple_homogeneous.h>
+
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -38,6 +44,21 @@ std::string what_thrown(Call&& call)
     return e.what();
   }
   return "no exception";
+}
+
+// The point types that the samplers refuse when the program is compiled (output_point()'s static
+// assertion): a homogeneous kernel on Gmpz, or Cartesian ones on int or Gmpz, wrote the samples'
+// coordinates truncated to integers, 1.41 apart for a minimum distance of 2.5.
+TEST(BadInput, PointTypesThatCannotHoldTheSamplesAreRefused)
+{
+  EXPECT_TRUE(PDS::internal::holds_doubles<K>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Exact_predicates_exact_constructions_kernel>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<double>>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::Gmpq>>());
+  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<float>>());
+  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<int>>());
+  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::Gmpz>>());
+  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_homogeneous<CGAL::Gmpz>>());
 }
 
 TEST(BadInput, EmptyMesh)

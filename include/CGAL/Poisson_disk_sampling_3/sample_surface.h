@@ -9,7 +9,9 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/Dart_throwing_engine.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
+#include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/representation_tags.h>
 #include <CGAL/tags.h>
 
 #include <array>
@@ -65,16 +67,30 @@ struct Size_request
   std::size_t number_of_points = 0; // > 0 when a count is given
 };
 
-/// A sample's point as the caller's point type. The samples are computed and checked in double: a
-/// point type with narrower coordinates (a kernel on `float`) would round them, and two samples
-/// could end up closer than the minimum distance, so it is refused when the program is compiled.
+/// Whether the points and numbers of `Kernel` hold the samples' doubles exactly: a Cartesian kernel
+/// whose number type is a field (double, or exact rationals as in `Epeck`). The samples are computed
+/// and checked in double; narrower coordinates (`float`) would round them, and integer ones (`int`,
+/// `Gmpz`, or a homogeneous kernel, whose points are made of integers) truncate them, silently: two
+/// samples could end up closer than the minimum distance, off the surface. Such kernels are refused
+/// when the program is compiled.
+template <class Kernel>
+constexpr bool holds_doubles()
+{
+  typedef typename Kernel::FT FT;
+  return std::is_same<typename Kernel::Kernel_tag, CGAL::Cartesian_tag>::value &&
+         std::is_convertible<typename CGAL::Algebraic_structure_traits<FT>::Algebraic_category,
+                             CGAL::Field_tag>::value &&
+         !(std::is_floating_point<FT>::value && sizeof(FT) < sizeof(double));
+}
+
+/// A sample's point as the caller's point type (see `holds_doubles()`).
 template <class Point_3>
 Point_3 output_point(const std::array<double, 3>& p)
 {
-  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::FT FT;
-  static_assert(!(std::is_floating_point<FT>::value && sizeof(FT) < sizeof(double)),
-                "Poisson_disk_sampling_3: the samples are doubles; a point type on float would round them and "
-                "break the minimum distance: use a kernel on double or exact numbers");
+  static_assert(holds_doubles<typename CGAL::Kernel_traits<Point_3>::Kernel>(),
+                "Poisson_disk_sampling_3: the samples are doubles; a point type on float would round them, "
+                "and one on integers (int, Gmpz, a homogeneous kernel) truncate them, and break the minimum "
+                "distance: use a Cartesian kernel on double or exact rationals (Epick, Epeck)");
   return Point_3(p[0], p[1], p[2]);
 }
 
