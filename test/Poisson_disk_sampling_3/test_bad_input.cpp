@@ -10,6 +10,7 @@
 #include <CGAL/Gmpz.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Simple_homogeneous.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <chrono>
 #include <cmath>
@@ -374,6 +375,29 @@ TEST(BadInput, RadiusBelowCoordinatePrecision)
   const std::string what = what_thrown<PDS::Invalid_input>(
       [&] { sample(m, PDS::parameters::radius(1e-7).maximum_number_of_points(1000000000)); });
   EXPECT_NE(what.find("2e-07"), std::string::npos) << what;
+}
+
+// A Surface_mesh whose removed faces were not collected: the messages name the bad face by its index
+// too, not only by its place among the faces left (they said "face 1" for the face f2).
+TEST(BadInput, MessagesNameTheFaceAsTheMeshDoes)
+{
+  for(bool quad : {true, false}) {
+    Mesh m;
+    const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0)), c = m.add_vertex(Point(0, 1, 0));
+    const auto d = m.add_vertex(Point(5, 0, 0)), e = m.add_vertex(Point(6, 0, 0)), f = m.add_vertex(Point(5, 1, 0));
+    const auto g = m.add_vertex(Point(9, 0, 0)), h = m.add_vertex(Point(10, 0, 0));
+    const auto i = m.add_vertex(Point(10, 1, 0)), j = m.add_vertex(Point(9, quad ? 1 : nan, 0));
+    m.add_face(a, b, c);
+    m.add_face(d, e, f);
+    if(quad) m.add_face(g, h, i, j);
+    else m.add_face(g, h, j);
+    CGAL::Euler::remove_face(halfedge(*m.faces().begin(), m), m);
+    ASSERT_EQ(m.number_of_faces(), 2u);
+    ASSERT_TRUE(m.has_garbage());
+    const std::string what = what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::radius(0.1)); });
+    EXPECT_NE(what.find("face 1 in the order of faces(tm) (f2)"), std::string::npos) << what;
+    EXPECT_NE(what.find(quad ? "not a triangle" : "not finite"), std::string::npos) << what;
+  }
 }
 
 TEST(BadInput, NonTriangleFaces)

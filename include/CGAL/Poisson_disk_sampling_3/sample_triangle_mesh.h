@@ -16,9 +16,13 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <array>
+#include <cmath>
 #include <iterator>
+#include <ostream>
+#include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -48,6 +52,29 @@ std::array<double, 3> to_double_array(const Point& p)
   return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
 }
 
+template <class T, class = void>
+struct Is_printable : std::false_type
+{};
+template <class T>
+struct Is_printable<T, std::void_t<decltype(std::declval<std::ostream&>() << std::declval<const T&>())>>
+    : std::true_type
+{};
+
+/// how a message names a face of a mesh: its place in the order of faces(tm), and its descriptor
+/// where that prints (a `Surface_mesh` index, "f2", differs from the place where removed faces were
+/// not collected)
+template <class Face>
+std::string face_name(const Face& f, std::size_t place)
+{
+  std::string name = "face " + std::to_string(place) + " in the order of faces(tm)";
+  if constexpr(Is_printable<Face>::value) {
+    std::ostringstream text;
+    text << f;
+    name += " (" + text.str() + ")";
+  }
+  return name;
+}
+
 /// the faces of a FaceListGraph as a triangle set; rejects faces that are not triangles
 template <class TriangleMesh, class NamedParameters>
 Triangle_fragment_traits_3
@@ -64,10 +91,16 @@ triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
     if(next(next(next(h, tm), tm), tm) != h)
-      throw Invalid_input("face " + std::to_string(face_of.size()) + " of the mesh is not a triangle; "
+      throw Invalid_input(face_name(f, face_of.size()) + " is not a triangle; "
                           "triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces()");
-    traits.add_triangle(to_double_array(get(vpm, source(h, tm))), to_double_array(get(vpm, target(h, tm))),
-                        to_double_array(get(vpm, target(next(h, tm), tm))));
+    const std::array<double, 3> q[3] = {to_double_array(get(vpm, source(h, tm))),
+                                        to_double_array(get(vpm, target(h, tm))),
+                                        to_double_array(get(vpm, target(next(h, tm), tm)))};
+    // checked here, as add_triangle() does, to name the face as the mesh does
+    for(const auto& p : q)
+      for(double c : p)
+        if(!std::isfinite(c)) throw Invalid_input(face_name(f, face_of.size()) + " has a coordinate that is not finite");
+    traits.add_triangle(q[0], q[1], q[2]);
     face_of.push_back(f);
   }
   if(face_of.empty()) throw Invalid_input("the mesh has no faces");
