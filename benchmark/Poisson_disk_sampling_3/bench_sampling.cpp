@@ -614,6 +614,49 @@ void long_faces_case(benchmark::State& state, const std::string& name)
   state.counters["memory_budget_use_whole_faces"] = peak[1] / budget;
 }
 
+// A needle longer than 2^12 times the distance: the triangle (0, 0, 0), (L, 0, 0), (L, 10^-8, 0) at
+// D = 10^-4, L = 2^k D; args: k. The triangle model cuts a face into at most 2^12 rows, so beyond
+// L = 2^14 D its rows are more than four times D long, and the darts and the fragments in wait per
+// point grow with their length (user manual, "Long thin triangles"). The heap's peak, as in
+// long_faces/. The output is checked to be a Poisson-disk set; `certified` is 1 where is_maximal()
+// proves it maximal, 0 where it answers undecided (its bounds ran out on the rows' slivers), and the
+// case fails where it finds a point farther than D from every sample.
+void long_rows_case(benchmark::State& state)
+{
+  const double d = 1e-4, length = std::ldexp(d, int(state.range(0)));
+  Mesh m;
+  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(length, 0, 0)), m.add_vertex(Point(length, 1e-8, 0)));
+  std::vector<Point> points;
+  PDS::Sampling_statistics stats;
+  double seconds = 0, peak = 0;
+  for(auto _ : state) {
+    points.clear();
+    points.shrink_to_fit();
+    const Heap_peak heap;
+    const auto start = std::chrono::steady_clock::now();
+    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d).statistics(
+                                                                  std::ref(stats)));
+    seconds = seconds_since(start);
+    peak = heap.bytes();
+    state.SetIterationTime(seconds);
+  }
+  if(!PDS::is_poisson_disk_set(points, d)) {
+    state.SkipWithError("output is not a Poisson-disk set");
+    return;
+  }
+  const auto maximal = PDS::is_maximal(m, points, d);
+  if(!maximal && maximal.uncovered_point) {
+    state.SkipWithError("output is not maximal");
+    return;
+  }
+  state.counters["certified"] = maximal ? 1 : 0;
+  state.counters["points"] = double(points.size());
+  state.counters["seconds"] = seconds;
+  state.counters["darts_per_point"] = double(stats.darts) / double(points.size());
+  state.counters["peak_active_fragments_per_point"] = double(stats.peak_active_fragments) / double(points.size());
+  state.counters["memory_budget_use"] = peak / (200 * double(points.size()) + 300);
+}
+
 // concurrency(CGAL::Parallel_tag()) against the sequential run, alternating (see above), on TBB's
 // default number of threads: args: n. The two give the same points, which is checked; the parallel
 // run's output is validated.
@@ -687,6 +730,9 @@ void register_cases()
                                  [name](benchmark::State& s) { long_faces_case(s, name); })
         ->Arg(std::string(name).rfind("cylinder", 0) == 0 ? 2000 : 10000)
         ->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  for(int k : {12, 14, 16, 17, 18})
+    benchmark::RegisterBenchmark("long_rows", long_rows_case)
+        ->Arg(k)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
     benchmark::RegisterBenchmark("threads/lion.off", [](benchmark::State& s) { threads_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
