@@ -163,6 +163,11 @@ int main(int argc, char** argv)
     }
     std::size_t not_triangles = 0;
     for(std::size_t i = 0; i < soup_polygons.size(); ++i) {
+      if(soup_polygons[i].size() < 3) {
+        std::cerr << "error: polygon " << i << " of " << mesh_file << " has " << soup_polygons[i].size()
+                  << (soup_polygons[i].size() == 1 ? " vertex" : " vertices") << "; a polygon needs at least 3\n";
+        return 1;
+      }
       not_triangles += (soup_polygons[i].size() != 3);
       for(std::size_t v : soup_polygons[i])
         if(v >= soup_points.size()) {
