@@ -14,8 +14,6 @@
 
 #include <array>
 #include <cmath>
-#include <iterator>
-#include <vector>
 
 namespace CGAL {
 namespace Poisson_disk_sampling_3 {
@@ -53,7 +51,7 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 ///
 /// A minimum distance of the diameter 2R or more gives one uniform point: every point of the sphere
 /// is within 2R of it. Up to about 2R (1 + 2 10^-15), the antipode's distance 2R is within the
-/// rounding of d, and `is_maximal()` answers such a set undecided. (There the engine of
+/// rounding of d, and `is_maximal()` answers such a set undecided. (From 2R up, the engine of
 /// `sample_surface()` returns after its first sample, without proving the sphere covered.)
 ///
 /// \returns the output iterator past the last point

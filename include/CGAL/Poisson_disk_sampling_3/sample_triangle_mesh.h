@@ -99,7 +99,8 @@ triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
     // checked here, as add_triangle() does, to name the face as the mesh does
     for(const auto& p : q)
       for(double c : p)
-        if(!std::isfinite(c)) throw Invalid_input(face_name(f, face_of.size()) + " has a coordinate that is not finite");
+        if(!std::isfinite(c))
+          throw Invalid_input(face_name(f, face_of.size()) + " has a coordinate that is not finite");
     traits.add_triangle(q[0], q[1], q[2]);
     face_of.push_back(f);
   }
