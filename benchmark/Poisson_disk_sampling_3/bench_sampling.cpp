@@ -650,6 +650,7 @@ void long_rows_case(benchmark::State& state)
     return;
   }
   state.counters["certified"] = maximal ? 1 : 0;
+  state.counters["dropped_fragments"] = double(stats.dropped_fragments); // at the engine's depth floor
   state.counters["points"] = double(points.size());
   state.counters["seconds"] = seconds;
   state.counters["darts_per_point"] = double(stats.darts) / double(points.size());

@@ -6,8 +6,8 @@
 #include "test_support.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Gmpq.h>
-#include <CGAL/Gmpz.h>
+#include <CGAL/Exact_integer.h>
+#include <CGAL/MP_Float.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Simple_homogeneous.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -49,17 +49,21 @@ std::string what_thrown(Call&& call)
 
 // The point types that the samplers refuse when the program is compiled (output_point()'s static
 // assertion): a homogeneous kernel on Gmpz, or Cartesian ones on int or Gmpz, wrote the samples'
-// coordinates truncated to integers, 1.41 apart for a minimum distance of 2.5.
+// coordinates truncated to integers, 1.41 apart for a minimum distance of 2.5. Those that hold
+// doubles exactly pass: fields, exact binary floats, homogeneous kernels on them.
 TEST(BadInput, PointTypesThatCannotHoldTheSamplesAreRefused)
 {
   EXPECT_TRUE(PDS::internal::holds_doubles<K>());
   EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Exact_predicates_exact_constructions_kernel>());
   EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<double>>());
-  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::Gmpq>>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::Exact_rational>>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::MP_Float>>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_homogeneous<double>>());
+  EXPECT_TRUE(PDS::internal::holds_doubles<CGAL::Simple_homogeneous<CGAL::Exact_rational>>());
   EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<float>>());
   EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<int>>());
-  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::Gmpz>>());
-  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_homogeneous<CGAL::Gmpz>>());
+  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_cartesian<CGAL::Exact_integer>>());
+  EXPECT_FALSE(PDS::internal::holds_doubles<CGAL::Simple_homogeneous<CGAL::Exact_integer>>());
 }
 
 TEST(BadInput, EmptyMesh)

@@ -322,6 +322,29 @@ TEST(Engine, ThreadsGiveTheSamePointsOnAUserModel)
   }
 }
 
+// set_first_sample_only(): the run returns after its first sample, which is the one a full run accepts
+// first for the same seed (sample_sphere() uses it from the diameter up), in parallel mode too.
+TEST(Engine, FirstSampleOnlyIsTheFullRunsFirstSample)
+{
+  const Square_traits square(true); // refusing half of its darts: the first sample may come from a later one
+  for(std::uint64_t seed : {0, 1, 2, 3, 4}) {
+    std::vector<Square_traits::Point> full, first;
+    PDS::internal::Dart_throwing_engine<Square_traits> whole(square, 0.05, seed, 10000);
+    whole.run(pds_test::Point_collector{&full});
+    for(bool parallel : {false, true}) {
+      first.clear();
+      PDS::internal::Dart_throwing_engine<Square_traits> engine(square, 0.05, seed, 10000);
+      engine.set_first_sample_only(true);
+      engine.set_parallel(parallel);
+      const auto statistics = engine.run(pds_test::Point_collector{&first});
+      ASSERT_EQ(first.size(), 1u) << seed;
+      EXPECT_EQ(statistics.samples, 1u);
+      EXPECT_FALSE(statistics.stopped);
+      EXPECT_EQ(first[0], full.at(0)) << seed << " " << parallel;
+    }
+  }
+}
+
 // The engine's members depend on CGAL_LINKED_WITH_TBB and CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES.
 // engine_variant.cpp, linked into this program, is compiled with neither TBB nor this unit's lack
 // of stage times, and runs the engine's run() for the same model and output type: each unit must

@@ -51,8 +51,10 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 ///
 /// A minimum distance of the diameter 2R or more gives one uniform point: every point of the sphere
 /// is within 2R of it. Up to about 2R (1 + 2 10^-15), the antipode's distance 2R is within the
-/// rounding of d, and `is_maximal()` answers such a set undecided. (From 2R up, the engine of
-/// `sample_surface()` returns after its first sample, without proving the sphere covered.)
+/// rounding of d, and `is_maximal()` answers such a set undecided. (From 2R up, `sample_sphere()`
+/// stops the engine after its first sample, without proving the sphere covered; `sample_surface()`
+/// with the sphere's model does not, and from 2R to about 2R (1 + 2 10^-15) it can stop with
+/// `Point_limit_exceeded`.)
 ///
 /// \returns the output iterator past the last point
 /// \throws Invalid_input for a sphere whose squared radius is not positive and finite as a double, a

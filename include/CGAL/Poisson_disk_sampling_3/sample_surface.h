@@ -24,6 +24,13 @@
 #include <vector>
 
 namespace CGAL {
+
+// CGAL's exact binary floating-point number types, named by number_holds_doubles() below (declared
+// only: their headers need not be included)
+class MP_Float;
+class Gmpzf;
+struct Mpzf;
+
 namespace Poisson_disk_sampling_3 {
 
 /// \ingroup PkgPoissonDiskSampling3Ref
@@ -67,20 +74,37 @@ struct Size_request
   std::size_t number_of_points = 0; // > 0 when a count is given
 };
 
-/// Whether the points and numbers of `Kernel` hold the samples' doubles exactly: a Cartesian kernel
-/// whose number type is a field (double, or exact rationals as in `Epeck`). The samples are computed
-/// and checked in double; narrower coordinates (`float`) would round them, and integer ones (`int`,
-/// `Gmpz`, or a homogeneous kernel, whose points are made of integers) truncate them, silently: two
-/// samples could end up closer than the minimum distance, off the surface. Such kernels are refused
-/// when the program is compiled.
+/// Whether a number type holds every double exactly: a field no narrower than double (double, or
+/// exact rationals as in `Epeck`), or one of CGAL's exact binary floating-point types.
+template <class NT>
+constexpr bool number_holds_doubles()
+{
+  return (std::is_convertible<typename CGAL::Algebraic_structure_traits<NT>::Algebraic_category,
+                              CGAL::Field_tag>::value &&
+          !(std::is_floating_point<NT>::value && sizeof(NT) < sizeof(double))) ||
+         std::is_same<NT, CGAL::MP_Float>::value || std::is_same<NT, CGAL::Gmpzf>::value ||
+         std::is_same<NT, CGAL::Mpzf>::value;
+}
+
+template <class Kernel, class = void>
+struct Is_homogeneous : std::false_type
+{};
+template <class Kernel>
+struct Is_homogeneous<Kernel, std::void_t<typename Kernel::Kernel_tag>>
+    : std::is_same<typename Kernel::Kernel_tag, CGAL::Homogeneous_tag>
+{};
+
+/// Whether the points and numbers of `Kernel` hold the samples' doubles exactly. The samples are
+/// computed and checked in double; narrower coordinates (`float`) would round them, and integers
+/// (`int`, `Gmpz`, or a homogeneous kernel on them, whose points are made from integers) truncate
+/// them, silently: two samples could end up closer than the minimum distance, off the surface. Such
+/// kernels are refused when the program is compiled. A homogeneous kernel is tested on its `RT`,
+/// from which points are made (w = 1), a Cartesian one on its `FT`.
 template <class Kernel>
 constexpr bool holds_doubles()
 {
-  typedef typename Kernel::FT FT;
-  return std::is_same<typename Kernel::Kernel_tag, CGAL::Cartesian_tag>::value &&
-         std::is_convertible<typename CGAL::Algebraic_structure_traits<FT>::Algebraic_category,
-                             CGAL::Field_tag>::value &&
-         !(std::is_floating_point<FT>::value && sizeof(FT) < sizeof(double));
+  if constexpr(Is_homogeneous<Kernel>::value) return number_holds_doubles<typename Kernel::RT>();
+  else return number_holds_doubles<typename Kernel::FT>();
 }
 
 /// A sample's point as the caller's point type (see `holds_doubles()`).
@@ -89,8 +113,8 @@ Point_3 output_point(const std::array<double, 3>& p)
 {
   static_assert(holds_doubles<typename CGAL::Kernel_traits<Point_3>::Kernel>(),
                 "Poisson_disk_sampling_3: the samples are doubles; a point type on float would round them, "
-                "and one on integers (int, Gmpz, a homogeneous kernel) truncate them, and break the minimum "
-                "distance: use a Cartesian kernel on double or exact rationals (Epick, Epeck)");
+                "and one on integers (int, Gmpz, a homogeneous kernel on them) truncate them, and break the "
+                "minimum distance: use a kernel on double or exact rationals (Epick, Epeck)");
   return Point_3(p[0], p[1], p[2]);
 }
 
@@ -421,7 +445,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Generates a maximal Poisson-disk sample set on the surface described by `traits`, by the optimized
 /// dart throwing of the paper's Section 3. Every other sampling function of the package is a facade
-/// over this one.
+/// over this one (but `sample_sphere()` at a distance of its diameter or more stops after the first
+/// sample, where this function, with the sphere's model, runs in full: see there).
 ///
 /// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
 /// @tparam SampleOutputIterator an output iterator accepting `SurfaceFragmentTraits::Sample`

@@ -77,15 +77,15 @@ inline const char* engine_stage_name(int stage)
 // member function, and code compiled for one layout would run on objects of the other.
 #ifdef CGAL_LINKED_WITH_TBB
 #ifdef CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES
-#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT with_tbb_timed
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT engine_with_tbb_timed
 #else
-#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT with_tbb
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT engine_with_tbb
 #endif
 #else
 #ifdef CGAL_POISSON_DISK_SAMPLING_3_STAGE_TIMES
-#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT sequential_timed
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT engine_sequential_timed
 #else
-#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT sequential
+#define CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT engine_sequential
 #endif
 #endif
 
