@@ -352,7 +352,7 @@ TEST(BadInput, AreasAboveTheDoubles)
       if(mode == 0) PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(1e150));
       else PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50));
     });
-    EXPECT_NE(what.find("triangle 1 has an area above the largest double"), std::string::npos) << mode << ": " << what;
+    EXPECT_NE(what.find("polygon 1 has an area above the largest double"), std::string::npos) << mode << ": " << what;
   }
   // triangles of finite areas whose sum is not
   p = {Point(0, 0, 0), Point(1e154, 0, 0), Point(0, 3e154, 0), Point(0, 0, 1e154)};
@@ -385,12 +385,15 @@ TEST(BadInput, RadiusBelowCoordinatePrecision)
 // too, not only by its place among the faces left (they said "face 1" for the face f2).
 TEST(BadInput, MessagesNameTheFaceAsTheMeshDoes)
 {
-  for(bool quad : {true, false}) {
+  // a quadrilateral, a corner not finite, an area above the largest double
+  for(const std::string kind : {"not a triangle", "not finite", "above the largest double"}) {
     Mesh m;
+    const bool quad = kind == "not a triangle", huge = kind == "above the largest double";
+    const double y = kind == "not finite" ? nan : huge ? 1e300 : 1;
     const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0)), c = m.add_vertex(Point(0, 1, 0));
     const auto d = m.add_vertex(Point(5, 0, 0)), e = m.add_vertex(Point(6, 0, 0)), f = m.add_vertex(Point(5, 1, 0));
-    const auto g = m.add_vertex(Point(9, 0, 0)), h = m.add_vertex(Point(10, 0, 0));
-    const auto i = m.add_vertex(Point(10, 1, 0)), j = m.add_vertex(Point(9, quad ? 1 : nan, 0));
+    const auto g = m.add_vertex(Point(9, 0, 0)), h = m.add_vertex(Point(huge ? 1e300 : 10, 0, 0));
+    const auto i = m.add_vertex(Point(10, 1, 0)), j = m.add_vertex(Point(9, y, 0));
     m.add_face(a, b, c);
     m.add_face(d, e, f);
     if(quad) m.add_face(g, h, i, j);
@@ -400,7 +403,7 @@ TEST(BadInput, MessagesNameTheFaceAsTheMeshDoes)
     ASSERT_TRUE(m.has_garbage());
     const std::string what = what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::radius(0.1)); });
     EXPECT_NE(what.find("face 1 in the order of faces(tm) (f2)"), std::string::npos) << what;
-    EXPECT_NE(what.find(quad ? "not a triangle" : "not finite"), std::string::npos) << what;
+    EXPECT_NE(what.find(kind), std::string::npos) << what;
   }
 }
 

@@ -125,11 +125,19 @@ public:
   /// \throws Invalid_input if a coordinate is not finite, or if the area is above the largest double
   std::uint32_t add_triangle(const Point& q0, const Point& q1, const Point& q2)
   {
+    const std::size_t i = faces_.size();
+    return add_triangle(q0, q1, q2, [i] { return "triangle " + std::to_string(i); });
+  }
+
+  /// the same, with the messages of its exceptions naming the triangle by `name()`, a callable that
+  /// returns a `std::string` (called only to throw): "face 7 of the mesh" rather than "triangle 7"
+  template <class Name>
+  std::uint32_t add_triangle(const Point& q0, const Point& q1, const Point& q2, const Name& name)
+  {
     const Point* q[3] = {&q0, &q1, &q2};
     for(const Point* p : q)
       for(double c : *p)
-        if(!std::isfinite(c))
-          throw Invalid_input("triangle " + std::to_string(faces_.size()) + " has a coordinate that is not finite");
+        if(!std::isfinite(c)) throw Invalid_input(std::string(name()) + " has a coordinate that is not finite");
     if(faces_.size() >= std::numeric_limits<std::uint32_t>::max())
       throw Invalid_input("too many triangles (at most 2^32 - 1)");
     Face f;
@@ -158,8 +166,7 @@ public:
       if(area > 0) f.area = area;
     }
     if(!(f.area <= (std::numeric_limits<double>::max)()))
-      throw Invalid_input("triangle " + std::to_string(faces_.size()) +
-                          " has an area above the largest double; scale the input");
+      throw Invalid_input(std::string(name()) + " has an area above the largest double; scale the input");
     classify(f);
     // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
     position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);

@@ -96,12 +96,7 @@ triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
     const std::array<double, 3> q[3] = {to_double_array(get(vpm, source(h, tm))),
                                         to_double_array(get(vpm, target(h, tm))),
                                         to_double_array(get(vpm, target(next(h, tm), tm)))};
-    // checked here, as add_triangle() does, to name the face as the mesh does
-    for(const auto& p : q)
-      for(double c : p)
-        if(!std::isfinite(c))
-          throw Invalid_input(face_name(f, face_of.size()) + " has a coordinate that is not finite");
-    traits.add_triangle(q[0], q[1], q[2]);
+    traits.add_triangle(q[0], q[1], q[2], [&] { return face_name(f, face_of.size()); });
     face_of.push_back(f);
   }
   if(face_of.empty()) throw Invalid_input("the mesh has no faces");
@@ -138,7 +133,7 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
                           "with triangulate_faces(), or, from CGAL 6.0, use triangulate_polygons())");
     for(std::size_t v : t)
       if(v >= p.size()) refuse_index(v);
-    traits.add_triangle(p[t[0]], p[t[1]], p[t[2]]);
+    traits.add_triangle(p[t[0]], p[t[1]], p[t[2]], [i] { return "polygon " + std::to_string(i); });
     ++i;
   }
   if(i == 0) throw Invalid_input("the polygon soup has no polygons");
