@@ -104,6 +104,12 @@ TEST(BadInput, BadSizes)
     EXPECT_THROW(PDS::is_maximal(m, std::vector<Point>(), r), PDS::Invalid_input) << r;
   }
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(0)), PDS::Invalid_input);
+  // an infinite count or bound is called so, not "below 1"
+  for(const std::string what :
+      {what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::number_of_points(inf)); }),
+       what_thrown<PDS::Invalid_input>(
+           [&] { sample(m, PDS::parameters::radius(0.1).maximum_number_of_points(inf)); })})
+    EXPECT_NE(what.find("must be finite"), std::string::npos) << what;
   // finite, but twice it is not: the message says so, not that the radius is not finite
   const std::string overflow = what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::radius(1e308)); });
   EXPECT_NE(overflow.find("2r overflows"), std::string::npos) << overflow;
@@ -214,6 +220,72 @@ TEST(BadInput, BoundHoldsWhileSampling)
   EXPECT_EQ(out.size(), 1000u);
 }
 
+// Each call clears the statistics first: a call that throws before its first run (an empty mesh, a
+// bad size, a bad sphere) left those of the call before it.
+TEST(BadInput, StatisticsAreClearedByEachCall)
+{
+  const Mesh m = triangle();
+  PDS::Sampling_statistics stats;
+  const auto sampled = [&] {
+    sample(m, PDS::parameters::number_of_points(50).random_seed(9).statistics(std::ref(stats)));
+    ASSERT_GT(stats.number_of_runs, 0u);
+    ASSERT_GT(stats.darts, 0u);
+  };
+  const auto cleared = [&](const char* what) {
+    EXPECT_EQ(stats.minimum_distance, 0.) << what;
+    EXPECT_EQ(stats.random_seed, 0u) << what;
+    EXPECT_EQ(stats.number_of_runs, 0u) << what;
+    EXPECT_EQ(stats.darts, 0u) << what;
+  };
+  std::vector<Point> out;
+  sampled();
+  EXPECT_THROW(sample(Mesh(), PDS::parameters::radius(0.1).statistics(std::ref(stats))), PDS::Invalid_input);
+  cleared("empty mesh");
+  sampled();
+  EXPECT_THROW(sample(m, PDS::parameters::radius(-0.1).statistics(std::ref(stats))), PDS::Invalid_input);
+  cleared("negative radius");
+  sampled();
+  const std::vector<Point> no_points;
+  const std::vector<std::array<int, 3>> no_polygons;
+  EXPECT_THROW(PDS::sample_polygon_soup(no_points, no_polygons, std::back_inserter(out),
+                                        PDS::parameters::radius(0.1).statistics(std::ref(stats))),
+               PDS::Invalid_input);
+  cleared("empty soup");
+  sampled();
+  EXPECT_THROW(PDS::sample_sphere(K::Sphere_3(Point(0, inf, 0), 1), std::back_inserter(out),
+                                  PDS::parameters::radius(0.1).statistics(std::ref(stats))),
+               PDS::Invalid_input);
+  cleared("bad sphere");
+}
+
+// Copies of a face count in the area as many times: a number_of_points search on them needs a
+// distance at which area / (pi r^2), what its runs cost, is many times the points. Its runs are not
+// refused by that estimate as a radius request is (on a flat surface it is 1.8 times the count), but
+// beyond four times the bound they are: 2,000 copies of a triangle took 17 s to give 1,000 points
+// under a bound of 5,000, at a distance for which the radius mode refuses 3.5 million points.
+TEST(BadInput, CountOnManyCopiesOfAFaceIsRefusedBeyondTheBound)
+{
+  const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  const std::vector<std::array<std::size_t, 3>> t(50, {0, 1, 2});
+  std::vector<Point> out;
+  const std::string what = what_thrown<PDS::Point_limit_exceeded>([&] {
+    PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                             PDS::parameters::number_of_points(1000).maximum_number_of_points(5000));
+  });
+  EXPECT_NE(what.find("exceed four times maximum_number_of_points (5000)"), std::string::npos) << what;
+  EXPECT_NE(what.find("overlap"), std::string::npos) << what;
+  // with room for them, the copies are sampled: a maximal set of the triangle, each point once
+  PDS::Sampling_statistics stats;
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                           PDS::parameters::number_of_points(1000).statistics(std::ref(stats)));
+  EXPECT_NEAR(double(out.size()), 1000., 10.);
+  // and a single copy at the bound is not refused (its area / (pi r^2) is about 1,800)
+  out.clear();
+  PDS::sample_polygon_soup(p, std::vector<std::array<std::size_t, 3>>(1, {0, 1, 2}), std::back_inserter(out),
+                           PDS::parameters::number_of_points(1000).maximum_number_of_points(1000));
+  EXPECT_NEAR(double(out.size()), 1000., 10.);
+}
+
 // Long thin faces are cut into rows about D long as darts reach them (Triangle_fragment_traits_3,
 // "Long thin triangles"): the pieces the sampler holds follow the points more than the faces' length
 // over D. A disk of 2000 slivers around its centre, 1 long and 0.003 wide, at D = 0.01: about 22,000
@@ -276,6 +348,11 @@ TEST(BadInput, CountsAndBoundsAtTheirExtremes)
   PDS::sample_triangle_mesh(m, std::back_inserter(out), PDS::parameters::radius(0.05).maximum_number_of_points(largest));
   EXPECT_GT(out.size(), 10u);
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(largest)), PDS::Point_limit_exceeded);
+  // a count above the largest size_t is named as given (it read 18446744073709551615)
+  const std::string huge =
+      what_thrown<PDS::Point_limit_exceeded>([&] { sample(m, PDS::parameters::number_of_points(1e300)); });
+  EXPECT_NE(huge.find("number_of_points (1e+300) exceeds maximum_number_of_points (100000000)"), std::string::npos)
+      << huge;
   EXPECT_THROW(sample(m, PDS::parameters::number_of_points(2.5)), PDS::Invalid_input);
   EXPECT_THROW(sample(m, PDS::parameters::radius(0.05).maximum_number_of_points(1.5)), PDS::Invalid_input);
 }
@@ -290,12 +367,23 @@ TEST(BadInput, DistancesOutsideTheHandledRange)
     m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(s, 0, 0)), m.add_vertex(Point(0, s, 0)));
     EXPECT_THROW(sample(m, PDS::parameters::minimum_distance(0.1 * s)), PDS::Invalid_input) << e;
     // the distance the count needs is named as such, not as a distance given (nor, where the first
-    // estimate underflowed to 0, as a distance that is not positive)
+    // estimate underflowed to 0, as a distance that is not positive); below the range, the search
+    // first tries its lower end, 2^-400, where the triangle, 2^-420 wide, gets one point
     for(std::size_t n : {std::size_t(50), std::size_t(1)}) {
+      if(e < 0 && n == 1) {
+        std::vector<Point> one;
+        PDS::Sampling_statistics stats;
+        PDS::sample_triangle_mesh(m, std::back_inserter(one),
+                                  PDS::parameters::number_of_points(1).statistics(std::ref(stats)));
+        EXPECT_EQ(one.size(), 1u);
+        EXPECT_EQ(stats.minimum_distance, std::ldexp(1., -400));
+        continue;
+      }
       const std::string what =
           what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::number_of_points(n)); });
-      EXPECT_NE(what.find("about " + std::to_string(n) + " points on a surface of area"), std::string::npos)
-          << e << ": " << what;
+      const std::string named = e < 0 ? "the search for 50 points needs a minimum distance of about"
+                                      : "about " + std::to_string(n) + " points on a surface of area";
+      EXPECT_NE(what.find(named), std::string::npos) << e << ": " << what;
       EXPECT_NE(what.find("scale the input"), std::string::npos) << e << ": " << what;
     }
     EXPECT_THROW(PDS::is_maximal(m, std::vector<Point>{Point(0, 0, 0)}, 0.1 * s), PDS::Invalid_input) << e;
@@ -318,12 +406,35 @@ TEST(BadInput, DistancesOutsideTheHandledRange)
     EXPECT_NE(what.find("the search for 75 points needs a minimum distance of about"), std::string::npos) << what;
     EXPECT_NE(what.find("too small for the precision"), std::string::npos) << what;
   }
+  // a count that the smallest distance the precision allows gives is reached, though the first
+  // estimate is below it: one point on a triangle 10^-3 wide at 10^6 from the origin, where 0.00059
+  // is below the limit, 0.00093 (it was refused); not 50, which need a distance below the limit
+  {
+    const std::vector<Point> p = {Point(1e6, 1e6, 1e6), Point(1e6 + 1e-3, 1e6, 1e6), Point(1e6, 1e6 + 1e-3, 1e6)};
+    const std::vector<std::array<std::size_t, 3>> t = {{0, 1, 2}};
+    for(std::size_t n : {1, 2}) {
+      std::vector<Point> out;
+      PDS::Sampling_statistics stats;
+      PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                               PDS::parameters::number_of_points(n).statistics(std::ref(stats)));
+      EXPECT_NEAR(double(out.size()), double(n), 1.) << n; // within one point
+      EXPECT_GE(stats.minimum_distance, 0.00093) << n;
+      EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, out, stats.minimum_distance)) << n;
+    }
+    std::vector<Point> out;
+    const std::string what = what_thrown<PDS::Invalid_input>([&] {
+      PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(50));
+    });
+    EXPECT_NE(what.find("too small for the precision"), std::string::npos) << what;
+  }
+  // a triangle whose area is about the smallest double: the first estimate no longer underflows to 0
   {
     Mesh m;
     m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1e-200, 0, 0)), m.add_vertex(Point(0, 1e-200, 0)));
     const std::string what =
         what_thrown<PDS::Invalid_input>([&] { sample(m, PDS::parameters::number_of_points(10000)); });
     EXPECT_NE(what.find("scale the input"), std::string::npos) << what;
+    EXPECT_EQ(what.find("about 0,"), std::string::npos) << what;
   }
   // the area of a triangle is the length of a cross product, whose square underflows (2^-1200) or
   // overflows (2^1200) here

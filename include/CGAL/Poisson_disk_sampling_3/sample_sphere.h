@@ -65,6 +65,8 @@ template <class K, class PointOutputIterator, class NamedParameters = CGAL::para
 PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIterator out,
                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
+  Sampling_statistics unused;
+  internal::clear_statistics(np, unused); // before the sphere is checked, which may throw
   const Sphere_fragment_traits_3 traits = internal::sphere_traits(sphere);
   auto emit = [&](const Sphere_fragment_traits_3::Sample& s) {
     *out++ = internal::output_point<typename K::Point_3>(s.point);

@@ -34,12 +34,15 @@ struct Mpzf;
 namespace Poisson_disk_sampling_3 {
 
 /// \ingroup PkgPoissonDiskSampling3Ref
-/// What a sampling call did; filled when passed as `statistics(std::ref(s))`. After an exception
-/// thrown while sampling (`Point_limit_exceeded`), `minimum_distance` and `number_of_runs` are those
-/// of the run that threw, `stopped_runs` those stopped before it, and the other members those of the
-/// run before it in a `number_of_points` search (zero otherwise); after `Invalid_input` for a later
-/// distance of the search, those of its last run; after `Target_not_reached`, those of the search's
-/// last run, with `number_of_runs` and `stopped_runs` counting all its runs.
+/// What a sampling call did; filled when passed as `statistics(std::ref(s))`. Each call first sets
+/// it to zero: after an exception thrown before a run starts (bad input, a request refused up front),
+/// it stays zero. After an exception thrown by a run (`Point_limit_exceeded` while sampling,
+/// `Invalid_input` for a surface with no area or a model that breaks the concept's rules),
+/// `minimum_distance`, `random_seed` and `number_of_runs` are those of the run that threw,
+/// `stopped_runs` those stopped before it, and the other members those of the run before it in a
+/// `number_of_points` search (zero otherwise); after an exception for a later distance of the search
+/// (`Invalid_input`, `Point_limit_exceeded`), those of its last run; after `Target_not_reached`, those
+/// of the search's last run, with `number_of_runs` and `stopped_runs` counting all its runs.
 struct Sampling_statistics
 {
   double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
@@ -72,6 +75,7 @@ struct Size_request
 {
   double minimum_distance = 0; // > 0 when the distance is given
   std::size_t number_of_points = 0; // > 0 when a count is given
+  double count_given = 0; // the count as given, which may exceed the largest size_t
 };
 
 /// Whether a number type holds every double exactly: a field no narrower than double (double, or
@@ -185,9 +189,11 @@ Size_request read_size(const NamedParameters& np)
     s.minimum_distance = d;
   } else {
     const double n = double(choose_parameter(get_parameter(np, internal_np::number_of_points), 0));
-    if(!(n >= 1) || !std::isfinite(n)) throw Invalid_input("number_of_points must be at least 1");
+    if(!(n >= 1)) throw Invalid_input("number_of_points must be at least 1");
+    if(!std::isfinite(n)) throw Invalid_input("number_of_points must be finite");
     if(n != std::floor(n)) throw Invalid_input("number_of_points must be a whole number");
     s.number_of_points = to_size(n);
+    s.count_given = n;
   }
   return s;
 }
@@ -213,7 +219,8 @@ std::size_t read_max_points(const NamedParameters& np)
 {
   const double m = double(CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::maximum_number_of_points), 100000000.));
-  if(!(m >= 1) || !std::isfinite(m)) throw Invalid_input("maximum_number_of_points must be at least 1");
+  if(!(m >= 1)) throw Invalid_input("maximum_number_of_points must be at least 1");
+  if(!std::isfinite(m)) throw Invalid_input("maximum_number_of_points must be finite");
   if(m != std::floor(m)) throw Invalid_input("maximum_number_of_points must be a whole number");
   return to_size(m);
 }
@@ -284,9 +291,13 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   const double area = total_area(traits);
   check_surface_area(area, "sample");
   const double tolerance = (std::max)(1., 0.01 * double(n));
-  double d = std::sqrt(0.6965 * area / double(n));
+  // (the square roots apart, so that the area of a tiny surface does not underflow in the product)
+  double d = std::sqrt(0.6965 / double(n)) * std::sqrt(area);
   double slope = -2, last_d = 0, last_n = 0;
   const double infinity = std::numeric_limits<double>::infinity();
+  // the smallest distance the runs may take (check_distance_range(), check_distance_precision())
+  const double lowest = (std::max)(smallest_minimum_distance,
+                                   std::nextafter(0x1.0p20 * traits.position_error(), infinity));
   double too_many = 0, too_few = infinity;
   std::vector<typename Traits::Sample> best;
   Sampling_statistics best_stats;
@@ -320,10 +331,13 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // take one to three runs (their tolerance is wide) where the first distance is about right;
   // small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
+    // A distance below the smallest the runs may take is brought up to it, unless a run there already
+    // gave too few points: a count that the smallest distance gives is then reached (one point on a
+    // triangle 10^-3 wide, 10^6 from the origin, whose estimate is below the precision).
+    if(d < lowest && too_many < lowest && too_few > lowest) d = lowest;
     // Each distance is checked here, named as the search's: the engine would name it as if the user
-    // had given it (or, where the first estimate underflows to 0, call it not positive). Where a run
-    // gave too few points, the next one may need a distance below the precision (two copies of a
-    // triangle far from the origin, each point counted twice).
+    // had given it. Where a run gave too few points, the next one may need a distance below the
+    // precision (two copies of a triangle far from the origin, each point counted twice).
     const std::string tried =
         run == 0 ? "about " + std::to_string(n) + " points on a surface of area " + number_text(area) +
                        " need a minimum distance of about " + number_text(d) + ", which"
@@ -331,6 +345,18 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                        number_text(d) + ", which";
     check_distance_range(d, tried);
     check_distance_precision(d, traits.position_error(), tried);
+    // The runs are not refused by area / (pi r^2), as a radius request is: on a flat surface that is
+    // about 1.8 times the count, and a target at the bound would be refused. But where it exceeds
+    // four times the bound, and 64, the surface's faces overlap or lie closer than d (a sheet and its
+    // copy): each counts in the area, and the run would take the time and memory of that many points
+    // (2,000 copies of a triangle took 17 s for 1,000 points under a bound of 5,000).
+    const double expected = area / (0.25 * 3.14159265358979323846 * d * d);
+    if(expected > 4 * double(max_points) + 64)
+      throw Point_limit_exceeded(tried + " makes area / (pi r^2), about " + number_text(expected) +
+                                 " points, exceed four times maximum_number_of_points (" +
+                                 std::to_string(max_points) + "): the surface's faces overlap or lie closer than "
+                                 "that distance, and each counts in the area that the run's time and memory "
+                                 "follow; raise the bound, or remove the copies");
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats,
@@ -413,6 +439,18 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                            "may reach it");
 }
 
+/// Resets the `statistics` parameter and returns it, or `local` where it is not given. Each sampling
+/// function does this first, so that an exception thrown before its first run leaves the caller's
+/// object zero, not holding an earlier call's values.
+template <class NamedParameters>
+Sampling_statistics& clear_statistics(const NamedParameters& np, Sampling_statistics& local)
+{
+  Sampling_statistics& stats = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
+  stats = Sampling_statistics();
+  return stats;
+}
+
 /// Runs a size request and calls `emit(sample)` for each sample; fills the `statistics` parameter if
 /// given. A radius request streams the samples as they are accepted (no copy of the set is kept); a
 /// `number_of_points` request keeps the best run's samples until the search ends. Runs at
@@ -422,15 +460,17 @@ template <class Traits, class NamedParameters, class Emit>
 void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit,
                     double covering_distance = std::numeric_limits<double>::infinity())
 {
+  Sampling_statistics local;
+  Sampling_statistics& stats = clear_statistics(np, local);
   const Size_request size = read_size(np);
   const std::uint64_t seed = read_seed(np);
   const std::size_t max_points = read_max_points(np);
   constexpr bool parallel = read_parallel<NamedParameters>();
-  Sampling_statistics local;
-  Sampling_statistics& stats = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter_reference(np, internal_np::statistics), local);
-  stats = Sampling_statistics();
   if(size.number_of_points > 0) {
+    if(size.count_given > double(max_points)) // as given: it may be above the largest size_t
+      throw Point_limit_exceeded("number_of_points (" + (size.count_given < 0x1.0p64 ?
+                                 std::to_string(std::uint64_t(size.count_given)) : number_text(size.count_given)) +
+                                 ") exceeds maximum_number_of_points (" + std::to_string(max_points) + ")");
     for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, parallel, stats,
                                       covering_distance))
       emit(s);
@@ -471,14 +511,18 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
 ///       has N points within 1% (at least one point), in one to three full runs, more for small targets
 ///       and for surfaces where a sample covers far less than pi r^2 (strips much narrower than the
-///       distance); a run stops at 2N + 64 points or the bound, so that the memory stays that of about
-///       4N points (the closest run kept, and the next)}
+///       distance); a run stops at 2N + 64 points or the bound, so that the samples held stay about 4N
+///       (the closest run kept, and the next). The runs' fragments, time and memory follow area / (pi
+///       r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than
+///       r, many times N where faces overlap or lie closer than r (copies of a face each count); a
+///       distance at which it exceeds four times `maximum_number_of_points`, and 64, is refused}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}
 ///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) a radius request whose area / (pi r^2)
-///       exceeds it, or a `number_of_points` above it, before any large allocation; the number of samples
-///       accepted never exceeds it either. The roots a model writes for the distance (its optional
+///       exceeds it, or a `number_of_points` above it, before any large allocation (and a distance of a
+///       `number_of_points` search whose area / (pi r^2) exceeds four times it, and 64); the number of
+///       samples accepted never exceeds it either. The roots a model writes for the distance (its optional
 ///       `initial_fragments(out, d)`) may outnumber its faces by at most four times the bound plus six
 ///       per face (`Triangle_fragment_traits_3` writes at most two per face).}
 ///     \cgalParamType{std::size_t}

@@ -172,9 +172,9 @@ public:
   }
 
   /// Whether `run()` first refuses a surface whose area / (pi r^2) exceeds the point bound (by
-  /// default, yes). A `number_of_points` search compares its target with the bound instead: the
-  /// distance it tries for n points has area / (pi r^2) near 1.8 n. The bound on the samples
-  /// accepted holds either way.
+  /// default, yes). A `number_of_points` search compares its target with the bound instead, and the
+  /// estimate with four times the bound: the distance it tries for n points has area / (pi r^2) near
+  /// 1.8 n. The bound on the samples accepted holds either way.
   void set_expected_count_check(bool check) { check_expected_count_ = check; }
 
   /// Whether `run()` throws each batch's darts and refines their fragments on TBB's threads (only where
