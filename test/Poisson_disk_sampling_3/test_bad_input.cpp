@@ -261,8 +261,10 @@ TEST(BadInput, StatisticsAreClearedByEachCall)
 // Copies of a face count in the area as many times: a number_of_points search on them needs a
 // distance at which area / (pi r^2), what its runs cost, is many times the points. Its runs are not
 // refused by that estimate as a radius request is (on a flat surface it is 1.8 times the count), but
-// beyond four times the bound they are: 2,000 copies of a triangle took 17 s to give 1,000 points
-// under a bound of 5,000, at a distance for which the radius mode refuses 3.5 million points.
+// the search takes no distance at which it exceeds four times the bound, and 64: 2,000 copies of a
+// triangle took 17 s to give 1,000 points under a bound of 5,000, at a distance for which the
+// radius mode refuses 3.5 million points. A surface folded closer than d, whose estimate goes past
+// four times the bound only at a distance the search tries on its way, still gets its points.
 TEST(BadInput, CountOnManyCopiesOfAFaceIsRefusedBeyondTheBound)
 {
   const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
@@ -275,13 +277,30 @@ TEST(BadInput, CountOnManyCopiesOfAFaceIsRefusedBeyondTheBound)
   EXPECT_NE(what.find("exceed four times maximum_number_of_points (5000)"), std::string::npos) << what;
   EXPECT_NE(what.find("overlap"), std::string::npos) << what;
   // with room for them, the copies are sampled: a maximal set of the triangle, each point once
-  PDS::Sampling_statistics stats;
-  PDS::sample_polygon_soup(p, t, std::back_inserter(out),
-                           PDS::parameters::number_of_points(1000).statistics(std::ref(stats)));
+  out.clear();
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::number_of_points(1000));
   EXPECT_NEAR(double(out.size()), 1000., 10.);
   // and a single copy at the bound is not refused (its area / (pi r^2) is about 1,800)
   out.clear();
   PDS::sample_polygon_soup(p, std::vector<std::array<std::size_t, 3>>(1, {0, 1, 2}), std::back_inserter(out),
+                           PDS::parameters::number_of_points(1000).maximum_number_of_points(1000));
+  EXPECT_NEAR(double(out.size()), 1000., 10.);
+  // A strip 1 long and 1 / 100 wide folded 100 times (area 2.69): the search's second distance,
+  // 0.0281, has an estimate of 4,342, above 4,064; the search runs at 0.0291 instead, where it is
+  // 4,064, and goes on to 1,000 points (998 at 0.0296 with seed 0). It was refused at 0.0281.
+  std::vector<Point> folds;
+  std::vector<std::array<std::size_t, 3>> strips;
+  for(std::size_t i = 0; i <= 100; ++i) {
+    const double x = 0.01 * double(i), z = i % 2 == 0 ? 0 : 0.025;
+    folds.insert(folds.end(), {Point(x, 0, z), Point(x, 1, z)});
+    if(i > 0) {
+      const std::size_t a = 2 * i - 2, b = 2 * i - 1, c = 2 * i, e = 2 * i + 1;
+      strips.push_back({a, c, e});
+      strips.push_back({a, e, b});
+    }
+  }
+  out.clear();
+  PDS::sample_polygon_soup(folds, strips, std::back_inserter(out),
                            PDS::parameters::number_of_points(1000).maximum_number_of_points(1000));
   EXPECT_NEAR(double(out.size()), 1000., 10.);
 }

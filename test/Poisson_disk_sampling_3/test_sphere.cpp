@@ -19,6 +19,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -164,42 +165,62 @@ TEST(SphereSampling, DiameterAndBeyondGiveOnePoint)
   expect_maximal_poisson_disk_set(unit, points, std::nextafter(2., 0.));
 }
 
-// The sphere's model, counting the pieces the certificate splits.
+// The sphere's model, counting the pieces the certificate splits, and stopping it with an exception
+// beyond a million (so that the code before the test's fix fails it in seconds, not minutes).
 struct Counting_sphere : Traits
 {
   using Traits::Traits;
   mutable long splits = 0;
   template <class Out> Out split(const Fragment& f, Out out) const
   {
-    ++splits;
+    if(++splits > 1000000) throw std::runtime_error("a million pieces split");
     return Traits::split(f, out);
   }
 };
 
-// One sample on the unit sphere at d = 2: its antipode is exactly d away, and the places within the
-// rounding of d around it, where no piece is proven covered or uncovered, make a region that the
-// certificate's last phase cannot shrink. It used to refine it until its budget ran out (10 million
-// decisions, about 15 s); it now stops once the pieces fill a region (see design.md, "Exactness")
-// and gives the same answer, undecided. A set whose tight place is a point is still certified: a
-// triangle's corners at d slightly above their distance to its circumcentre.
-TEST(Certificate, FillingRegionEndsTheLastPhase)
+// Places within the rounding of d from the samples that make a region, not a point or a curve: the
+// certificate can prove no piece there covered or uncovered, and refining them only multiplies them.
+// One sample on the unit sphere at d = 2, whose antipode is exactly d away: the last phase refined
+// the pieces around it until its budget ran out (10 million decisions, about 15 s). A sample at the
+// centre of the unit sphere (off the surface) at d = 1, every point of the sphere at distance d: the
+// first phase split the whole sphere down to the deferral size, about 2 10^8 pieces, 9 minutes. Both
+// now stop once the pieces fill a region (design.md, "Exactness") and give the same answer,
+// undecided. A set whose tight place is a point is still certified: a triangle's corners at d
+// slightly above their distance to its circumcentre.
+TEST(Certificate, FillingRegionsEndTheRefinement)
 {
-  for(const Point& sample : {Point(0, 0, -1), Point(0.6, 0, 0.8), Point(0.36, 0.48, -0.8)}) {
+  struct Probe
+  {
+    Point sample;
+    double d;
+  };
+  for(const Probe& c : {Probe{Point(0, 0, -1), 2}, Probe{Point(0.6, 0, 0.8), 2}, Probe{Point(0.36, 0.48, -0.8), 2},
+                        Probe{Point(0, 0, 0), 1}}) {
     const Counting_sphere unit({{0, 0, 0}}, 1);
-    const std::vector<Point> one{sample};
-    const auto check = PDS::is_maximal_on_surface(unit, one, 2.);
-    EXPECT_FALSE(check.maximal) << sample;
-    EXPECT_FALSE(check.uncovered_point.has_value()) << sample;
-    EXPECT_GT(check.uncovered_area, 0) << sample;
-    EXPECT_LT(check.uncovered_area, 1e-9) << sample;
-    EXPECT_LT(unit.splits, 1000000) << sample;
-    // above 2 by more than the rounding: one ball holds the sphere
-    EXPECT_TRUE(PDS::is_maximal_on_surface(unit, one, 2 * (1 + 1e-13))) << sample;
+    const std::vector<Point> one{c.sample};
+    PDS::Maximality_check<Point> check;
+    ASSERT_NO_THROW(check = PDS::is_maximal_on_surface(unit, one, c.d)) << c.sample << " " << c.d;
+    EXPECT_FALSE(check.maximal) << c.sample;
+    EXPECT_FALSE(check.uncovered_point.has_value()) << c.sample;
+    EXPECT_GT(check.uncovered_area, 0) << c.sample;
+    if(c.d == 2) EXPECT_LT(check.uncovered_area, 1e-9) << c.sample;
+    // above d by more than the rounding: one ball holds the sphere; below, a gap
+    EXPECT_TRUE(PDS::is_maximal_on_surface(unit, one, c.d * (1 + 1e-12))) << c.sample;
+    if(c.d == 1) EXPECT_TRUE(PDS::is_maximal_on_surface(unit, one, c.d * (1 - 1e-9)).uncovered_point) << c.sample;
   }
   const std::vector<Point> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const std::vector<std::array<int, 3>> t{{0, 1, 2}};
   for(double margin : {1e-6, 1e-9, 1e-12})
     EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(p, t, p, std::sqrt(0.5) * (1 + margin))) << margin;
+  // Pieces too long for any ball to hold are undecided wherever they are, and do not count: the
+  // blocks of rows of a needle 2^14 D long and 10^-8 wide, halved over twelve depths, made the
+  // certificate answer undecided for a maximal set when every undecided piece counted.
+  const double d = 1e-4, length = std::ldexp(d, 14);
+  const std::vector<Point> needle{{0, 0, 0}, {length, 0, 0}, {length, 1e-8, 0}};
+  std::vector<Point> samples;
+  PDS::sample_polygon_soup(needle, t, std::back_inserter(samples), PDS::parameters::minimum_distance(d));
+  EXPECT_GT(samples.size(), 12000u);
+  EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(needle, t, samples, d));
 }
 
 // Darts are spent where cells are long and thin. Halved across their longer side, rectangles stay

@@ -34,7 +34,8 @@ struct Maximality_check
   /// than the minimum distance from every sample, with a margin for that rounding (a place where one
   /// more sample fits), if one was found. `maximal` false and no point means undecided: the
   /// certificate's bounds on work, memory or depth ran out before it could prove the pieces left
-  /// either covered or uncovered (see the user manual, "Validation")
+  /// either covered or uncovered, or those pieces filled a region within rounding of the distance
+  /// from the samples (see the user manual, "Validation")
   std::optional<Point_3> uncovered_point;
   /// `maximal`
   explicit operator bool() const { return maximal; }
@@ -75,10 +76,13 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 /// as computed, is farther than d from every sample by more than twice the rounding of the surface's
 /// points (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that
 /// the exact point is farther than d; the computed one is reported as `uncovered_point`. The work and
-/// the memory are bounded (10 million pieces in the last phase, 2.5 million waiting at a time): on
+/// the memory are bounded (10 million pieces in the last phase, 2.5 million waiting at a time, and
+/// pieces that fill a region within rounding of d from the samples are not refined further): on
 /// slivers far thinner than d, which midpoint subdivision must cut across as often as along, and on
 /// sets maximal with no margin (a point of the surface at distance d from the samples), the answer
 /// may be `false` with no `uncovered_point`, undecided. Coordinates are read as the nearest doubles.
+/// The samples are not required to lie on the surface (any points may be certified), and faces of
+/// zero area (corners on one line) are skipped, as the sampler skips them.
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
@@ -128,7 +132,10 @@ is_maximal_on_polygon_soup(const PointRange& points, const PolygonRange& polygon
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Certifies that `samples` is maximal on a sphere: spherical rectangles are split until one sample's
 /// ball holds each of them entirely, with the exact closed-form test of `Sphere_fragment_traits_3`
-/// (right near the poles) and a margin larger than its rounding error.
+/// (right near the poles) and a margin larger than its rounding error, with the bounds and answers
+/// of `is_maximal()` for meshes. The sphere is the one `sample_sphere()` samples: its centre's
+/// coordinates and its radius (the square root of its squared radius) as the nearest doubles, so that
+/// for an exact kernel the answer is about that sphere.
 /// @tparam K a CGAL kernel
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
 ///

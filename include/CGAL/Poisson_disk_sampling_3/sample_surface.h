@@ -10,6 +10,7 @@
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/assertions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/representation_tags.h>
 #include <CGAL/tags.h>
@@ -37,7 +38,8 @@ namespace Poisson_disk_sampling_3 {
 /// What a sampling call did; filled when passed as `statistics(std::ref(s))`. Each call first sets
 /// it to zero: after an exception thrown before a run starts (bad input, a request refused up front),
 /// it stays zero. After an exception thrown by a run (`Point_limit_exceeded` while sampling,
-/// `Invalid_input` for a surface with no area or a model that breaks the concept's rules),
+/// `Invalid_input` for a model that breaks the concept's rules, or in a radius request for a surface
+/// with no area),
 /// `minimum_distance`, `random_seed` and `number_of_runs` are those of the run that threw,
 /// `stopped_runs` those stopped before it, and the other members those of the run before it in a
 /// `number_of_points` search (zero otherwise); after an exception for a later distance of the search
@@ -285,9 +287,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                                                    std::size_t max_points, bool parallel, Sampling_statistics& stats,
                                                    double covering_distance)
 {
-  if(n > max_points)
-    throw Point_limit_exceeded("number_of_points (" + std::to_string(n) +
-                               ") exceeds maximum_number_of_points (" + std::to_string(max_points) + ")");
+  CGAL_precondition(n <= max_points); // refused by sample_request()
   const double area = total_area(traits);
   check_surface_area(area, "sample");
   const double tolerance = (std::max)(1., 0.01 * double(n));
@@ -295,9 +295,17 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   double d = std::sqrt(0.6965 / double(n)) * std::sqrt(area);
   double slope = -2, last_d = 0, last_n = 0;
   const double infinity = std::numeric_limits<double>::infinity();
-  // the smallest distance the runs may take (check_distance_range(), check_distance_precision())
-  const double lowest = (std::max)(smallest_minimum_distance,
-                                   std::nextafter(0x1.0p20 * traits.position_error(), infinity));
+  // The smallest distance the runs may take: check_distance_range(), check_distance_precision(), and
+  // the distance at which area / (pi r^2) is four times the bound, and 64. The runs are not refused
+  // by that estimate, as a radius request is: on a flat surface it is about 1.8 times the count, and
+  // a target at the bound would be refused. But beyond four times the bound, the surface's faces
+  // overlap or lie closer than d to each other (copies, folds): each counts in the area, and a run
+  // takes the time and memory of that many points (2,000 copies of a triangle took 17 s to give
+  // 1,000 points under a bound of 5,000).
+  const double precise = (std::max)(smallest_minimum_distance,
+                                    std::nextafter(0x1.0p20 * traits.position_error(), infinity));
+  const double bounded = std::sqrt(area / (0.25 * 3.14159265358979323846 * (4 * double(max_points) + 64)));
+  const double lowest = (std::max)(precise, bounded);
   double too_many = 0, too_few = infinity;
   std::vector<typename Traits::Sample> best;
   Sampling_statistics best_stats;
@@ -332,8 +340,8 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // small ones, that may need more, are cheap.
   for(int run = 0; run < 24; ++run) {
     // A distance below the smallest the runs may take is brought up to it, unless a run there already
-    // gave too few points: a count that the smallest distance gives is then reached (one point on a
-    // triangle 10^-3 wide, 10^6 from the origin, whose estimate is below the precision).
+    // gave too few or too many points: a count that the smallest distance gives is then reached (one
+    // point on a triangle 10^-3 wide, 10^6 from the origin, whose estimate is below the precision).
     if(d < lowest && too_many < lowest && too_few > lowest) d = lowest;
     // Each distance is checked here, named as the search's: the engine would name it as if the user
     // had given it. Where a run gave too few points, the next one may need a distance below the
@@ -345,18 +353,14 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                        number_text(d) + ", which";
     check_distance_range(d, tried);
     check_distance_precision(d, traits.position_error(), tried);
-    // The runs are not refused by area / (pi r^2), as a radius request is: on a flat surface that is
-    // about 1.8 times the count, and a target at the bound would be refused. But where it exceeds
-    // four times the bound, and 64, the surface's faces overlap or lie closer than d (a sheet and its
-    // copy): each counts in the area, and the run would take the time and memory of that many points
-    // (2,000 copies of a triangle took 17 s for 1,000 points under a bound of 5,000).
-    const double expected = area / (0.25 * 3.14159265358979323846 * d * d);
-    if(expected > 4 * double(max_points) + 64)
+    if(d < bounded) {
+      const double expected = area / (0.25 * 3.14159265358979323846 * d * d);
       throw Point_limit_exceeded(tried + " makes area / (pi r^2), about " + number_text(expected) +
                                  " points, exceed four times maximum_number_of_points (" +
-                                 std::to_string(max_points) + "): the surface's faces overlap or lie closer than "
-                                 "that distance, and each counts in the area that the run's time and memory "
-                                 "follow; raise the bound, or remove the copies");
+                                 std::to_string(max_points) + "): faces that overlap, or lie closer to each other "
+                                 "than that distance (copies, folds), each count in the area that a run's time "
+                                 "and memory follow; raise the bound");
+    }
     std::vector<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats,
@@ -514,17 +518,19 @@ void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit
 ///       distance); a run stops at 2N + 64 points or the bound, so that the samples held stay about 4N
 ///       (the closest run kept, and the next). The runs' fragments, time and memory follow area / (pi
 ///       r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than
-///       r, many times N where faces overlap or lie closer than r (copies of a face each count); a
-///       distance at which it exceeds four times `maximum_number_of_points`, and 64, is refused}
+///       r, many times N where faces overlap or lie closer than r (copies of a face each count). The
+///       search tries no distance at which it exceeds four times `maximum_number_of_points`, and 64,
+///       and refuses a target that needs one}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}
 ///     \cgalParamDescription{refuse (throw `Point_limit_exceeded`) a radius request whose area / (pi r^2)
-///       exceeds it, or a `number_of_points` above it, before any large allocation (and a distance of a
-///       `number_of_points` search whose area / (pi r^2) exceeds four times it, and 64); the number of
-///       samples accepted never exceeds it either. The roots a model writes for the distance (its optional
-///       `initial_fragments(out, d)`) may outnumber its faces by at most four times the bound plus six
-///       per face (`Triangle_fragment_traits_3` writes at most two per face).}
+///       exceeds it, or a `number_of_points` above it, before any large allocation (and a
+///       `number_of_points` target that needs a distance at which area / (pi r^2) exceeds four times
+///       it, and 64); the number of samples accepted never exceeds it either. The roots a model writes
+///       for the distance (its optional `initial_fragments(out, d)`) may outnumber its faces by at most
+///       four times the bound plus six per face (`Triangle_fragment_traits_3` writes at most two per
+///       face).}
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{100 million}
 ///   \cgalParamNEnd

@@ -74,17 +74,25 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   const double d_gap = std::nextafter(d + 2 * traits.position_error(), std::numeric_limits<double>::infinity());
   const double d2_near = d_gap * d_gap * (1 + 1e-9);
 
+  // a reference point whose nearest sample is this far, in double precision, is at d to about a
+  // millionth (see `record` below)
+  const double d2_at_d = d * d * (1 - 0x1.0p-19);
+
   enum Verdict { COVERED, GAP_LEAF, SPLIT };
   // decides one piece; records a proven gap
   std::size_t decided_after_gap = 0;
+  bool ref_at_d = false; // the last piece decided has its reference point at d from the samples
   auto decide = [&](const Item& item) {
     decided_after_gap += result.has_witness;
     const std::array<double, 3> ref = traits.reference_point(item.fragment);
     near.clear();
     bool ref_near = false; // a sample within d_gap of the reference point: no gap proven there
+    ref_at_d = true;
     near_samples.for_each_near(ref.data(), d_gap, [&](Point_hash_grid::Index, const double* q) {
       const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
-      if(dx * dx + dy * dy + dz * dz > d2_near) return;
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 > d2_near) return;
+      if(d2 < d2_at_d) ref_at_d = false;
       near.push_back(q);
       if(!ref_near && compare_distance_exact(ref.data(), q, d_gap) != CGAL::LARGER) ref_near = true;
     });
@@ -116,6 +124,32 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     if(list.size() < max_waiting) list.push_back(item);
     else not_proven(item);
   };
+  // Regions that the pieces fill. For the pieces of area up to d^2 / 64, the count decided at each
+  // depth, and how many of them were left undecided (split, or deferred and decided again later)
+  // with their reference point at d from the samples, to about a millionth: pieces long and thin,
+  // which no ball holds whatever the samples (blocks of rows of a long face), are left undecided
+  // wherever they are, but have their middle at d only by chance. Where the places that no ball
+  // holds with the margin of is_covered() shrink to points or curves as the pieces shrink, as around
+  // any place a ball holds with some margin, at most about half to 0.7 of a depth's pieces stay
+  // undecided. Where they stay undecided 19 in 20 at four depths in a row, with 1,024 pieces or more
+  // at each, they fill a region where the distance to the samples is within rounding of d (a set
+  // maximal with no margin: one sample on a sphere at d = 2R, whose distance peaks smoothly at the
+  // antipode; a sample at the centre of a sphere of radius d, off the surface): refining it only
+  // multiplies its pieces, and from then on an undecided piece of that size counts as not proven
+  // covered whole (see design.md, "Exactness").
+  const double fill_area = d * d / 64;
+  std::size_t decided_at[64] = {}, undecided_at[64] = {};
+  bool filling = false;
+  auto record = [&](const Item& item, bool undecided) {
+    if(filling || !(traits.area(item.fragment) <= fill_area)) return;
+    const int k = (std::min)((std::max)(item.depth, 0), 63);
+    ++decided_at[k];
+    undecided_at[k] += undecided && ref_at_d;
+    if(k < 3) return;
+    for(int j = k - 3; j <= k; ++j)
+      if(decided_at[j] < 1024 || undecided_at[j] * 20 < decided_at[j] * 19) return;
+    filling = true;
+  };
   auto certify_root = [&](const Fragment& root) {
     if(!(traits.area(root) > 0)) return;
     stack.push_back(Item{root, level_or(traits, root, 0)});
@@ -123,7 +157,10 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       const Item item = stack.back();
       stack.pop_back();
       const Verdict v = decide(item);
-      if(v == COVERED) continue;
+      if(v == COVERED) {
+        record(item, false);
+        continue;
+      }
       const double area = traits.area(item.fragment);
       if(v == GAP_LEAF) result.uncovered_area += area;
       // Once a gap is proven the answer is known, and what is left is the area estimate. After a
@@ -132,41 +169,38 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       // which costs time and memory in proportion to the boundaries' length over that size.
       else if(result.has_witness && area <= leaf_area && decided_after_gap > budget / 4)
         result.uncovered_area += area;
+      else if(filling && area <= fill_area) not_proven(item);
       else if(area <= defer_area || item.depth >= max_depth) defer(item, deferred);
-      else split(item, [&](const Item& c) { stack.push_back(c); });
+      else {
+        record(item, true);
+        split(item, [&](const Item& c) { stack.push_back(c); });
+      }
     }
   };
   root_fragments(traits, d, Calling_output(&certify_root));
 
-  // The deferred pieces, breadth-first. Where the pieces left fill a region instead of following a
-  // curve or a point, the region is one where no ball holds them with the margin of is_covered() and
-  // no gap is proven either (points within rounding of d from the samples: a set maximal with no
-  // margin, such as one point on a sphere at d = 2R, whose antipode is 2R away), and splitting them
-  // further only multiplies them: at d = 2R on the unit sphere the budget ran out after 10 million
-  // decisions, about 15 s, for the same answer, undecided. Such a region is recognised when, four
-  // levels running, a thousand pieces or more are split and 19 in 20 of them again. Around a place a
-  // ball holds with a margin, or a point farther from the samples than d, at most about half of the
-  // children of a piece are undecided, as the region shrinks to a point or a curve (see design.md).
-  int filling_levels = 0;
+  // The deferred pieces, breadth-first, until a gap is proven, the budget is spent or the pieces are
+  // found to fill a region (above): what is left then counts as not proven covered.
   std::size_t spent = 0;
   std::vector<Item> next;
-  while(!deferred.empty() && !result.has_witness && spent < budget) {
+  while(!deferred.empty() && !result.has_witness && spent < budget && !filling) {
     next.clear();
-    std::size_t splits = 0;
-    for(const Item& item : deferred) {
+    std::size_t done = 0;
+    for(; done < deferred.size() && !filling; ++done) {
+      const Item& item = deferred[done];
       ++spent;
       const Verdict v = decide(item);
-      if(v == COVERED) continue;
-      if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) {
+      if(v == COVERED) {
+        record(item, false);
+      } else if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) {
         defer(item, next);
       } else {
-        ++splits;
+        record(item, true);
         split(item, [&](const Item& c) { defer(c, next); });
       }
     }
-    filling_levels = deferred.size() >= 1024 && splits * 20 >= deferred.size() * 19 ? filling_levels + 1 : 0;
+    next.insert(next.end(), deferred.begin() + std::ptrdiff_t(done), deferred.end()); // left when filling
     deferred.swap(next);
-    if(filling_levels >= 4 && !result.has_witness) break;
     if(std::all_of(deferred.begin(), deferred.end(), [&](const Item& i) { return i.depth >= max_depth; })) break;
   }
   for(const Item& item : deferred) not_proven(item);

@@ -254,7 +254,11 @@ public:
     root_fragments(traits_, d_, Calling_output(&push));
 
     const double r = 0.5 * d_;
-    const std::size_t expected = std::size_t(total_area / (3.14159265358979323846 * r * r)) + 1;
+    // (converted only below half the largest size_t: where the bound was raised that far, the
+    // estimate may exceed the largest, whose conversion to an integer is undefined)
+    const double estimate = total_area / (3.14159265358979323846 * r * r);
+    const std::size_t half = (std::numeric_limits<std::size_t>::max)() / 2;
+    const std::size_t expected = estimate < double(half) ? std::size_t(estimate) + 1 : half;
     // cells of side 4D: a sample is copied into 3.4 buckets on average, a query scans about 30
     // samples; 2D copies each sample 8 times, 6D to 8D scan twice as many for no measured gain
     Neighbor_buckets buckets(d_, 4, expected < max_points_ ? expected : max_points_);
