@@ -262,7 +262,7 @@ TEST(BadInput, StatisticsAreClearedByEachCall)
 // distance at which area / (pi r^2), what its runs cost, is many times the points. Its runs are not
 // refused by that estimate as a radius request is (on a flat surface it is 1.8 times the count), but
 // the search takes no distance at which it exceeds four times the bound, and 64: 2,000 copies of a
-// triangle took 17 s to give 1,000 points under a bound of 5,000, at a distance for which the
+// triangle held 900,000 fragments in wait to give 1,000 points under a bound of 5,000, where the
 // radius mode refuses 3.5 million points. A surface folded closer than d, whose estimate goes past
 // four times the bound only at a distance the search tries on its way, still gets its points.
 TEST(BadInput, CountOnManyCopiesOfAFaceIsRefusedBeyondTheBound)

@@ -181,9 +181,9 @@ struct Counting_sphere : Traits
 // Places within the rounding of d from the samples that make a region, not a point or a curve: the
 // certificate can prove no piece there covered or uncovered, and refining them only multiplies them.
 // One sample on the unit sphere at d = 2, whose antipode is exactly d away: the last phase refined
-// the pieces around it until its budget ran out (10 million decisions, about 15 s). A sample at the
+// the pieces around it until its budget ran out (10 million decisions). A sample at the
 // centre of the unit sphere (off the surface) at d = 1, every point of the sphere at distance d: the
-// first phase split the whole sphere down to the deferral size, about 2 10^8 pieces, 9 minutes. Both
+// first phase split the whole sphere down to the deferral size, about 2 10^8 pieces. Both
 // now stop once the pieces fill a region (design.md, "Exactness") and give the same answer,
 // undecided. A set whose tight place is a point is still certified: a triangle's corners at d
 // slightly above their distance to its circumcentre.
