@@ -39,12 +39,12 @@ namespace Poisson_disk_sampling_3 {
 /// it to zero: after an exception thrown before a run starts (bad input, a request refused up front),
 /// it stays zero. After an exception thrown by a run (`Point_limit_exceeded` while sampling,
 /// `Invalid_input` for a model that breaks the concept's rules, or in a radius request for a surface
-/// with no area),
-/// `minimum_distance`, `random_seed` and `number_of_runs` are those of the run that threw,
-/// `stopped_runs` those stopped before it, and the other members those of the run before it in a
-/// `number_of_points` search (zero otherwise); after an exception for a later distance of the search
-/// (`Invalid_input`, `Point_limit_exceeded`), those of its last run; after `Target_not_reached`, those
-/// of the search's last run, with `number_of_runs` and `stopped_runs` counting all its runs.
+/// with no area), `minimum_distance`, `random_seed` and `number_of_runs` are those of the run that
+/// threw, `stopped_runs` those stopped before it, and the other members those of the run before it
+/// in a `number_of_points` search (zero otherwise); after an exception for a later distance of the
+/// search (`Invalid_input`, `Point_limit_exceeded`), those of its last run; after
+/// `Target_not_reached`, those of the search's last run, with `number_of_runs` and `stopped_runs`
+/// counting all its runs.
 struct Sampling_statistics
 {
   double minimum_distance = 0;       ///< the minimum distance used (the one found, for `number_of_points`)
