@@ -65,8 +65,9 @@ template <class K, class PointOutputIterator, class NamedParameters = CGAL::para
 PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIterator out,
                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  Sampling_statistics unused;
-  internal::clear_statistics(np, unused); // before the sphere is checked, which may throw
+  Sampling_statistics local; // (if not given)
+  // cleared before the sphere is checked, which may throw
+  Sampling_statistics& stats = internal::clear_statistics(np, local);
   const Sphere_fragment_traits_3 traits = internal::sphere_traits(sphere);
   auto emit = [&](const Sphere_fragment_traits_3::Sample& s) {
     *out++ = internal::output_point<typename K::Point_3>(s.point);
@@ -77,7 +78,7 @@ PointOutputIterator sample_sphere(const CGAL::Sphere_3<K>& sphere, PointOutputIt
   // refined a cap around it down to its depth floor, until the bound on the fragments in wait
   // stopped it (Point_limit_exceeded, after 1.5 s); far above, the tests overflowed. So runs at 2R
   // or more return after their first sample.
-  internal::sample_request(traits, np, emit, 2 * traits.radius());
+  internal::sample_request(traits, np, stats, emit, 2 * traits.radius());
   return out;
 }
 

@@ -304,7 +304,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // in wait to give 1,000 points under a bound of 5,000).
   const double precise = (std::max)(smallest_minimum_distance,
                                     std::nextafter(0x1.0p20 * traits.position_error(), infinity));
-  const double bounded = std::sqrt(area / (0.25 * 3.14159265358979323846 * (4 * double(max_points) + 64)));
+  const double bounded = std::sqrt(area / (4 * double(max_points) + 64)) * std::sqrt(disk_count(1, 1));
   const double lowest = (std::max)(precise, bounded);
   double too_many = 0, too_few = infinity;
   std::vector<typename Traits::Sample> best;
@@ -354,7 +354,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     check_distance_range(d, tried);
     check_distance_precision(d, traits.position_error(), tried);
     if(d < bounded) {
-      const double expected = area / (0.25 * 3.14159265358979323846 * d * d);
+      const double expected = disk_count(area, d);
       throw Point_limit_exceeded(tried + " makes area / (pi r^2), about " + number_text(expected) +
                                  " points, exceed four times maximum_number_of_points (" +
                                  std::to_string(max_points) + "): faces that overlap, or lie closer to each other "
@@ -455,17 +455,16 @@ Sampling_statistics& clear_statistics(const NamedParameters& np, Sampling_statis
   return stats;
 }
 
-/// Runs a size request and calls `emit(sample)` for each sample; fills the `statistics` parameter if
-/// given. A radius request streams the samples as they are accepted (no copy of the set is kept); a
-/// `number_of_points` request keeps the best run's samples until the search ends. Runs at
-/// `covering_distance` or more, at which any sample covers the whole surface (a sphere's diameter),
-/// return after their first sample (see `Dart_throwing_engine::set_first_sample_only()`).
+/// Runs a size request and calls `emit(sample)` for each sample; fills `stats`, the `statistics`
+/// parameter or a local object, which the caller has cleared (`clear_statistics()`). A radius request
+/// streams the samples as they are accepted (no copy of the set is kept); a `number_of_points` request
+/// keeps the best run's samples until the search ends. Runs at `covering_distance` or more, at which
+/// any sample covers the whole surface (a sphere's diameter), return after their first sample (see
+/// `Dart_throwing_engine::set_first_sample_only()`).
 template <class Traits, class NamedParameters, class Emit>
-void sample_request(const Traits& traits, const NamedParameters& np, Emit&& emit,
+void sample_request(const Traits& traits, const NamedParameters& np, Sampling_statistics& stats, Emit&& emit,
                     double covering_distance = std::numeric_limits<double>::infinity())
 {
-  Sampling_statistics local;
-  Sampling_statistics& stats = clear_statistics(np, local);
   const Size_request size = read_size(np);
   const std::uint64_t seed = read_seed(np);
   const std::size_t max_points = read_max_points(np);
@@ -574,7 +573,9 @@ template <class SurfaceFragmentTraits, class SampleOutputIterator,
 SampleOutputIterator sample_surface(const SurfaceFragmentTraits& traits, SampleOutputIterator out,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::sample_request(traits, np, [&](const typename SurfaceFragmentTraits::Sample& s) { *out++ = s; });
+  Sampling_statistics local; // (if not given)
+  Sampling_statistics& stats = internal::clear_statistics(np, local);
+  internal::sample_request(traits, np, stats, [&](const typename SurfaceFragmentTraits::Sample& s) { *out++ = s; });
   return out;
 }
 

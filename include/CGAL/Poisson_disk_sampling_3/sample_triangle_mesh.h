@@ -202,10 +202,11 @@ PointOutputIterator sample_triangle_mesh(const TriangleMesh& tm, PointOutputIter
 {
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
-  Sampling_statistics unused;
-  internal::clear_statistics(np, unused); // before the mesh is read, which may throw
+  Sampling_statistics local; // (if not given)
+  // cleared before the mesh is read, which may throw
+  Sampling_statistics& stats = internal::clear_statistics(np, local);
   const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
-  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
+  internal::sample_request(traits, np, stats, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::output_point<typename GT::Point_3>(s.point);
   });
   return out;
@@ -233,10 +234,11 @@ SampleOutputIterator sample_triangle_mesh_with_locations(const TriangleMesh& tm,
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   std::vector<face_descriptor> face_of;
-  Sampling_statistics unused;
-  internal::clear_statistics(np, unused); // before the mesh is read, which may throw
+  Sampling_statistics local; // (if not given)
+  // cleared before the mesh is read, which may throw
+  Sampling_statistics& stats = internal::clear_statistics(np, local);
   const Triangle_fragment_traits_3 traits = internal::triangles_of_mesh(tm, np, face_of);
-  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
+  internal::sample_request(traits, np, stats, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::located_sample<GT, face_descriptor>(traits, s, [&](std::uint32_t i) { return face_of[i]; });
   });
   return out;
@@ -270,11 +272,12 @@ PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonR
   typedef typename CGAL::Kernel_traits<Point>::Kernel Default_kernel;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
                                                              Default_kernel>::type GT;
-  Sampling_statistics unused;
-  internal::clear_statistics(np, unused); // before the soup is read, which may throw
+  Sampling_statistics local; // (if not given)
+  // cleared before the soup is read, which may throw
+  Sampling_statistics& stats = internal::clear_statistics(np, local);
   internal::check_no_vertex_point_map<NamedParameters>();
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
-  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
+  internal::sample_request(traits, np, stats, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::output_point<typename GT::Point_3>(s.point);
   });
   return out;
@@ -305,11 +308,12 @@ SampleOutputIterator sample_polygon_soup_with_locations(const PointRange& points
   typedef typename CGAL::Kernel_traits<Point>::Kernel Default_kernel;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
                                                              Default_kernel>::type GT;
-  Sampling_statistics unused;
-  internal::clear_statistics(np, unused); // before the soup is read, which may throw
+  Sampling_statistics local; // (if not given)
+  // cleared before the soup is read, which may throw
+  Sampling_statistics& stats = internal::clear_statistics(np, local);
   internal::check_no_vertex_point_map<NamedParameters>();
   const Triangle_fragment_traits_3 traits = internal::triangles_of_soup(points, polygons);
-  internal::sample_request(traits, np, [&](const Triangle_fragment_traits_3::Sample& s) {
+  internal::sample_request(traits, np, stats, [&](const Triangle_fragment_traits_3::Sample& s) {
     *out++ = internal::located_sample<GT, std::size_t>(traits, s, [](std::uint32_t i) { return std::size_t(i); });
   });
   return out;

@@ -140,8 +140,8 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   const double fill_area = d * d / 64;
   std::size_t decided_at[64] = {}, undecided_at[64] = {};
   bool filling = false;
-  auto record = [&](const Item& item, bool undecided) {
-    if(filling || !(traits.area(item.fragment) <= fill_area)) return;
+  auto record = [&](const Item& item, double area, bool undecided) {
+    if(filling || !(area <= fill_area)) return;
     const int k = (std::min)((std::max)(item.depth, 0), 63);
     ++decided_at[k];
     undecided_at[k] += undecided && ref_at_d;
@@ -157,11 +157,11 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       const Item item = stack.back();
       stack.pop_back();
       const Verdict v = decide(item);
+      const double area = traits.area(item.fragment);
       if(v == COVERED) {
-        record(item, false);
+        record(item, area, false);
         continue;
       }
-      const double area = traits.area(item.fragment);
       if(v == GAP_LEAF) result.uncovered_area += area;
       // Once a gap is proven the answer is known, and what is left is the area estimate. After a
       // quarter of the budget of decisions spent on it, a piece of leaf size that no single ball holds
@@ -172,7 +172,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       else if(filling && area <= fill_area) not_proven(item);
       else if(area <= defer_area || item.depth >= max_depth) defer(item, deferred);
       else {
-        record(item, true);
+        record(item, area, true);
         split(item, [&](const Item& c) { stack.push_back(c); });
       }
     }
@@ -191,11 +191,11 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       ++spent;
       const Verdict v = decide(item);
       if(v == COVERED) {
-        record(item, false);
+        record(item, traits.area(item.fragment), false);
       } else if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) {
         defer(item, next);
       } else {
-        record(item, true);
+        record(item, traits.area(item.fragment), true);
         split(item, [&](const Item& c) { defer(c, next); });
       }
     }
