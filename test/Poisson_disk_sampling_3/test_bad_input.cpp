@@ -511,6 +511,26 @@ TEST(BadInput, RadiusBelowCoordinatePrecision)
   EXPECT_NE(what.find("2e-07"), std::string::npos) << what;
 }
 
+// A face of zero area is neither sampled nor certified: far from the others, it does not limit the
+// distance to the precision of its coordinates (a unit triangle with such a face at 10^9 was refused
+// at d = 0.01).
+TEST(BadInput, FacesOfZeroAreaDoNotLimitTheDistance)
+{
+  Mesh m;
+  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)), m.add_vertex(Point(0, 1, 0)));
+  m.add_face(m.add_vertex(Point(1e9, 0, 0)), m.add_vertex(Point(2e9, 0, 0)), m.add_vertex(Point(3e9, 0, 0)));
+  std::vector<Point> points;
+  ASSERT_NO_THROW(PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(0.01)));
+  EXPECT_GT(points.size(), 3000u);
+  EXPECT_TRUE(PDS::is_poisson_disk_set(points, 0.01));
+  EXPECT_TRUE(PDS::is_maximal(m, points, 0.01));
+  // a face of positive area there still does
+  Mesh far = m;
+  far.add_face(far.add_vertex(Point(1e9, 0, 0)), far.add_vertex(Point(1e9 + 1, 0, 0)),
+               far.add_vertex(Point(1e9, 1, 0)));
+  EXPECT_THROW(sample(far, PDS::parameters::minimum_distance(0.01)), PDS::Invalid_input);
+}
+
 // A Surface_mesh whose removed faces were not collected: the messages name the bad face by its index
 // too, not only by its place among the faces left (they said "face 1" for the face f2).
 TEST(BadInput, MessagesNameTheFaceAsTheMeshDoes)

@@ -7,16 +7,90 @@
 
 #include "test_support.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/MP_Float.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Quotient.h>
 
 #include <gtest/gtest-spi.h>
 
 #include <array>
 #include <chrono>
+#include <iostream>
 #include <cmath>
 #include <limits>
 
 namespace {
+
+// Every coordinate is read as the nearest double, ties to even. The oracle: IEEE arithmetic, whose
+// quotient and sum of two doubles are the nearest double to the exact result. CGAL::to_double() gave
+// the middle of a lazy number's interval (not the nearest for about a quarter of such quotients, and
+// another double once the exact value had been computed) and truncated rationals.
+template <class NT>
+void expect_nearest_doubles(const char* type)
+{
+  CGAL::Random rng(5);
+  int differ_from_to_double = 0;
+  for(int i = 0; i < 400; ++i) {
+    const double p = std::ldexp(rng.get_double(-1, 1), rng.get_int(-30, 30));
+    const double q = std::ldexp(rng.get_double(0.5, 1), rng.get_int(-30, 30));
+    const NT quotient = NT(p) / NT(q), sum = NT(p) + NT(q * 0x1.0p-40);
+    differ_from_to_double += CGAL::to_double(quotient) != p / q;
+    EXPECT_EQ(PDS::internal::nearest_double(quotient), p / q) << type << ": " << p << " / " << q;
+    EXPECT_EQ(PDS::internal::nearest_double(sum), p + q * 0x1.0p-40) << type << ": " << p << " + " << q * 0x1.0p-40;
+  }
+  // halfway between two doubles: the even one, as IEEE rounds
+  const double ulp = 0x1.0p-52;
+  EXPECT_EQ(PDS::internal::nearest_double(NT(NT(1) + NT(ulp / 2))), 1.) << type;
+  EXPECT_EQ(PDS::internal::nearest_double(NT(NT(1) + NT(3 * ulp / 2))), 1 + 2 * ulp) << type;
+  EXPECT_EQ(PDS::internal::nearest_double(NT(NT(-1) - NT(3 * ulp / 2))), -1 - 2 * ulp) << type;
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(PDS::internal::nearest_double(NT(NT(tiny) / NT(2))), 0.) << type;
+  EXPECT_EQ(PDS::internal::nearest_double(NT(NT(3 * tiny) / NT(2))), 2 * tiny) << type;
+  EXPECT_EQ(PDS::internal::nearest_double(NT(0.1)), 0.1) << type;
+  std::cout << type << ": CGAL::to_double() not the nearest for " << differ_from_to_double << " of 400 quotients\n";
+}
+
+TEST(CoordinateReading, ExactNumbersAreReadAsTheNearestDoubles)
+{
+  expect_nearest_doubles<CGAL::Exact_predicates_exact_constructions_kernel::FT>("Epeck::FT");
+  expect_nearest_doubles<CGAL::Exact_rational>("Exact_rational");
+  expect_nearest_doubles<CGAL::Quotient<CGAL::MP_Float>>("Quotient<MP_Float>");
+  // a lazy number read before and after its exact value is computed
+  typedef CGAL::Exact_predicates_exact_constructions_kernel::FT FT;
+  for(int i = 1; i < 100; ++i) {
+    const FT x = FT(1) / FT(3 * i) + FT(1) / FT(7);
+    const double before = PDS::internal::nearest_double(x);
+    CGAL::exact(x);
+    EXPECT_EQ(PDS::internal::nearest_double(x), before) << i;
+    EXPECT_EQ(before, PDS::internal::nearest_double(x.exact())) << i;
+  }
+}
+
+// With Epeck, a mesh whose coordinates were constructed gives the same points whatever the program
+// computed before: it gave other points once their exact values had been computed.
+TEST(CoordinateReading, EpeckMeshGivesTheSamePointsBeforeAndAfterExactValues)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  typedef EK::FT FT;
+  CGAL::Surface_mesh<EK::Point_3> m;
+  m.add_face(m.add_vertex(EK::Point_3(FT(1) / FT(3) + FT(1) / FT(7), FT(2) / FT(3), FT(1) / FT(11))),
+             m.add_vertex(EK::Point_3(FT(7) / FT(3), FT(1) / FT(9), FT(5) / FT(13))),
+             m.add_vertex(EK::Point_3(FT(4) / FT(3), FT(17) / FT(7), FT(3) / FT(11))));
+  auto sample = [&] {
+    std::vector<EK::Point_3> points;
+    PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(0.05).random_seed(1));
+    std::vector<std::array<double, 3>> xyz;
+    for(const EK::Point_3& p : points) xyz.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                                        CGAL::to_double(p.z())}});
+    return xyz;
+  };
+  const auto before = sample();
+  for(auto v : vertices(m)) CGAL::exact(m.point(v));
+  const auto after = sample();
+  EXPECT_GT(before.size(), 500u);
+  EXPECT_EQ(before, after);
+}
 
 TEST(IsPoissonDiskSet, DecidesExactlyAtTheThreshold)
 {

@@ -168,8 +168,10 @@ public:
     if(!(f.area <= (std::numeric_limits<double>::max)()))
       throw Invalid_input(std::string(name()) + " has an area above the largest double; scale the input");
     classify(f);
-    // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate
-    position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
+    // corners V0 + u E1 + v E2 are off the exact sub-triangle by less than this, per coordinate (a face
+    // of zero area is neither sampled nor certified: its coordinates do not limit the distance)
+    if(f.area > 0)
+      position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
     faces_.push_back(f);
     if(thin_normal[0] != 0 || thin_normal[1] != 0 || thin_normal[2] != 0)
       thin_face_normals_.emplace_back(std::uint32_t(faces_.size() - 1), thin_normal);

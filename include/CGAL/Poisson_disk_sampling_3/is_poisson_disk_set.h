@@ -7,6 +7,7 @@
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Point_hash_grid.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/nearest_double.h>
 
 #include <CGAL/number_utils.h>
 
@@ -36,12 +37,13 @@ struct Poisson_disk_check
 
 namespace internal {
 
-// the coordinates of a point of a CGAL kernel, or of a model's point, `std::array<double, 3>`
+// the coordinates of a point of a CGAL kernel, as the nearest doubles, or of a model's point,
+// `std::array<double, 3>`
 template <class Point>
 std::array<double, 3> coordinates(const Point& p)
 {
   if constexpr(std::is_same<Point, std::array<double, 3>>::value) return p;
-  else return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  else return {{nearest_double(p.x()), nearest_double(p.y()), nearest_double(p.z())}};
 }
 
 template <class PointRange>

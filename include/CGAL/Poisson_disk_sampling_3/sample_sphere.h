@@ -6,6 +6,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3/Sphere_fragment_traits_3.h>
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/nearest_double.h>
 #include <CGAL/Poisson_disk_sampling_3/parameters.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_surface.h>
 
@@ -24,13 +25,13 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 {
   // a sphere is given by its squared radius, whose double may overflow (radii from about 1e154 up) or
   // underflow (below about 1e-162) where the radius would not: that is the number to name
-  const double squared_radius = CGAL::to_double(sphere.squared_radius());
+  const double squared_radius = nearest_double(sphere.squared_radius());
   if(!(squared_radius > 0) || !std::isfinite(squared_radius))
     throw Invalid_input("the sphere's squared radius (" + number_text(squared_radius) +
                         " as a double) must be positive and finite");
   const auto& c = sphere.center();
   return Sphere_fragment_traits_3(
-      std::array<double, 3>{{CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())}},
+      std::array<double, 3>{{nearest_double(c.x()), nearest_double(c.y()), nearest_double(c.z())}},
       std::sqrt(squared_radius));
 }
 

@@ -6,6 +6,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3/Triangle_fragment_traits_3.h>
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/nearest_double.h>
 #include <CGAL/Poisson_disk_sampling_3/parameters.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_surface.h>
 
@@ -49,7 +50,7 @@ namespace internal {
 template <class Point>
 std::array<double, 3> to_double_array(const Point& p)
 {
-  return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  return std::array<double, 3>{{nearest_double(p.x()), nearest_double(p.y()), nearest_double(p.z())}};
 }
 
 template <class T, class = void>
