@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 
 #include <tbb/global_control.h>
+#include <tbb/task_group.h>
 
 #include <cmath>
 #include <tuple>
@@ -157,6 +158,26 @@ TEST(MeshSampling, ThreadsGiveTheSamePoints)
     EXPECT_EQ(parallel_count, counted) << threads << " threads";
   }
   expect_maximal_poisson_disk_set(m, sequential, d);
+}
+
+// Called from a task of a tbb::task_group that has been cancelled (another of its tasks threw, or
+// called cancel()): the same points. The engine's parallel loops ran in the caller's context, where
+// they return at once without running, and the batches went on with the darts of the one before.
+TEST(MeshSampling, ThreadsInACancelledTaskGroupGiveTheSamePoints)
+{
+  const Mesh m = load_mesh("lion.off");
+  const double d = distance_for(PMP::area(m), 20000);
+  std::vector<Point> sequential, parallel;
+  PDS::sample_triangle_mesh(m, std::back_inserter(sequential), PDS::parameters::minimum_distance(d).random_seed(5));
+  tbb::task_group group;
+  group.run([&] {
+    group.cancel();
+    PDS::sample_triangle_mesh(m, std::back_inserter(parallel),
+                              PDS::parameters::minimum_distance(d).random_seed(5).maximum_number_of_points(100000)
+                                  .concurrency(CGAL::Parallel_tag()));
+  });
+  EXPECT_NO_THROW(group.wait());
+  EXPECT_EQ(parallel, sequential);
 }
 
 // Scaled by a power of two, a mesh gives the same points, scaled: no step of the triangle model, its

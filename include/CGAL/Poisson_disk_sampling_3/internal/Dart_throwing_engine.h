@@ -15,6 +15,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 #endif
 
 #include <algorithm>
@@ -543,9 +544,16 @@ private:
   {
 #ifdef CGAL_LINKED_WITH_TBB
     if(in_parallel(n)) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
-        body(r.begin(), r.end(), scratch_.local(), false);
-      });
+      // In a context of its own, not the caller's: in a context that is cancelled (the caller's
+      // tbb::task_group, once another of its tasks has thrown or called cancel()), parallel_for
+      // returns at once, without running its body and without throwing, and the batch went on with
+      // the darts of the one before (the same samples accepted again and again, for minutes). Its own
+      // body's exceptions still reach the caller.
+      tbb::task_group_context context(tbb::task_group_context::isolated);
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, n, grain),
+          [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end(), scratch_.local(), false); },
+          context);
       return;
     }
 #endif
