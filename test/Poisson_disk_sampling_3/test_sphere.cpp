@@ -223,6 +223,31 @@ TEST(Certificate, FillingRegionsEndTheRefinement)
   EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(needle, t, samples, d));
 }
 
+// A gap that follows the pieces' edges: two samples at the poles of the unit sphere leave a band
+// along the equator uncovered, |z| < 2 rel at d = sqrt(2) (1 - rel). Never answered maximal; a witness
+// down to rel = 10^-6, and undecided below (the pieces along the band fill a region at d to about a
+// millionth before any reference point falls into it: design.md, "Exactness"). Tilted, so that the
+// band crosses the pieces, a witness down to rel = 10^-12.
+TEST(Certificate, GapsAlongThePiecesEdgesAreNeverCertified)
+{
+  const K::Sphere_3 unit(CGAL::ORIGIN, 1);
+  const double t = 0.3;
+  const std::vector<Point> poles{{0, 0, 1}, {0, 0, -1}};
+  const std::vector<Point> tilted{{std::sin(t), 0.1 * std::cos(t), std::cos(t) * std::sqrt(0.99)},
+                                  {-std::sin(t), -0.1 * std::cos(t), -std::cos(t) * std::sqrt(0.99)}};
+  for(double rel : {1e-3, 1e-6, 1e-9}) {
+    const auto check = PDS::is_maximal(unit, poles, std::sqrt(2.) * (1 - rel));
+    EXPECT_FALSE(check.maximal) << rel;
+    EXPECT_GE(check.uncovered_area, 8 * pi * rel) << rel; // the band's area, about 4 pi (2 rel)
+    if(rel >= 1e-6) EXPECT_TRUE(check.uncovered_point) << rel;
+  }
+  for(double rel : {1e-3, 1e-7, 1e-12}) {
+    const auto check = PDS::is_maximal(unit, tilted, std::sqrt(2.) * (1 - rel));
+    EXPECT_FALSE(check.maximal) << rel;
+    EXPECT_TRUE(check.uncovered_point) << rel;
+  }
+}
+
 // Darts are spent where cells are long and thin. Halved across their longer side, rectangles stay
 // about as wide as long near the poles too (test CellsStayAboutAsWideAsLong), and the sampler throws
 // 7.6 to 7.7 darts per sample at about 10,000 points; with the paper's four children, the slivers at
