@@ -378,6 +378,8 @@ public:
         lap(scan_stage);
       };
       for_each_dart(darts.size(), throw_darts);
+      // (on threads, the stages from `fragment` to `scan` are not timed apart: all of it as `scan`)
+      if(in_parallel(darts.size())) clock.lap(stats.stage_seconds[scan_stage]);
       std::size_t thrown = 0;
       for(const Dart& d : darts) thrown += d.thrown;
       stats.darts += thrown;
