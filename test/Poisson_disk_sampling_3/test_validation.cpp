@@ -8,9 +8,8 @@
 #include "test_support.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/MP_Float.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Quotient.h>
 
 #include <gtest/gtest-spi.h>
 
@@ -37,6 +36,9 @@ void expect_nearest_doubles(const char* type)
     const NT quotient = NT(p) / NT(q), sum = NT(p) + NT(q * 0x1.0p-40);
     differ_from_to_double += CGAL::to_double(quotient) != p / q;
     EXPECT_EQ(PDS::internal::nearest_double(quotient), p / q) << type << ": " << p << " / " << q;
+    // the same value, through a lazy number's interval some units wide
+    const NT third = NT(1) / NT(3), wide = NT(NT(quotient + third) - third);
+    EXPECT_EQ(PDS::internal::nearest_double(wide), p / q) << type << ": " << p << " / " << q << " + 1/3 - 1/3";
     EXPECT_EQ(PDS::internal::nearest_double(sum), p + q * 0x1.0p-40) << type << ": " << p << " + " << q * 0x1.0p-40;
   }
   // halfway between two doubles: the even one, as IEEE rounds
@@ -55,7 +57,7 @@ TEST(CoordinateReading, ExactNumbersAreReadAsTheNearestDoubles)
 {
   expect_nearest_doubles<CGAL::Exact_predicates_exact_constructions_kernel::FT>("Epeck::FT");
   expect_nearest_doubles<CGAL::Exact_rational>("Exact_rational");
-  expect_nearest_doubles<CGAL::Quotient<CGAL::MP_Float>>("Quotient<MP_Float>");
+  expect_nearest_doubles<CGAL::Gmpq>("Gmpq");
   // a lazy number read before and after its exact value is computed
   typedef CGAL::Exact_predicates_exact_constructions_kernel::FT FT;
   for(int i = 1; i < 100; ++i) {
