@@ -15,15 +15,15 @@
 
 #include <array>
 #include <chrono>
-#include <iostream>
 #include <cmath>
+#include <iostream>
 #include <limits>
 
 namespace {
 
 // Every coordinate is read as the nearest double, ties to even. The oracle: IEEE arithmetic, whose
 // quotient and sum of two doubles are the nearest double to the exact result. CGAL::to_double() gave
-// the middle of a lazy number's interval (not the nearest for about a quarter of such quotients, and
+// the middle of a lazy number's interval (not the nearest for about half of such quotients, and
 // another double once the exact value had been computed) and truncated rationals.
 template <class NT>
 void expect_nearest_doubles(const char* type)
