@@ -43,7 +43,7 @@ template <class Point>
 std::array<double, 3> coordinates(const Point& p)
 {
   if constexpr(std::is_same<Point, std::array<double, 3>>::value) return p;
-  else return {{nearest_double(p.x()), nearest_double(p.y()), nearest_double(p.z())}};
+  else return nearest_doubles(p);
 }
 
 template <class PointRange>

@@ -29,10 +29,7 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
   if(!(squared_radius > 0) || !std::isfinite(squared_radius))
     throw Invalid_input("the sphere's squared radius (" + number_text(squared_radius) +
                         " as a double) must be positive and finite");
-  const auto& c = sphere.center();
-  return Sphere_fragment_traits_3(
-      std::array<double, 3>{{nearest_double(c.x()), nearest_double(c.y()), nearest_double(c.z())}},
-      std::sqrt(squared_radius));
+  return Sphere_fragment_traits_3(nearest_doubles(sphere.center()), std::sqrt(squared_radius));
 }
 
 } // namespace internal

@@ -304,6 +304,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   // in wait to give 1,000 points under a bound of 5,000).
   const double precise = (std::max)(smallest_minimum_distance,
                                     std::nextafter(0x1.0p20 * traits.position_error(), infinity));
+  // (disk_count(area, d) is disk_count(1, 1) area / d^2)
   const double bounded = std::sqrt(area / (4 * double(max_points) + 64)) * std::sqrt(disk_count(1, 1));
   const double lowest = (std::max)(precise, bounded);
   double too_many = 0, too_few = infinity;

@@ -47,12 +47,6 @@ struct Triangle_sample
 
 namespace internal {
 
-template <class Point>
-std::array<double, 3> to_double_array(const Point& p)
-{
-  return std::array<double, 3>{{nearest_double(p.x()), nearest_double(p.y()), nearest_double(p.z())}};
-}
-
 template <class T, class = void>
 struct Is_printable : std::false_type
 {};
@@ -94,9 +88,9 @@ triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
     if(next(next(next(h, tm), tm), tm) != h)
       throw Invalid_input(face_name(f, face_of.size()) + " is not a triangle; "
                           "triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces()");
-    const std::array<double, 3> q[3] = {to_double_array(get(vpm, source(h, tm))),
-                                        to_double_array(get(vpm, target(h, tm))),
-                                        to_double_array(get(vpm, target(next(h, tm), tm)))};
+    const std::array<double, 3> q[3] = {nearest_doubles(get(vpm, source(h, tm))),
+                                        nearest_doubles(get(vpm, target(h, tm))),
+                                        nearest_doubles(get(vpm, target(next(h, tm), tm)))};
     traits.add_triangle(q[0], q[1], q[2], [&] { return face_name(f, face_of.size()); });
     face_of.push_back(f);
   }
@@ -109,7 +103,7 @@ template <class PointRange, class PolygonRange>
 Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const PolygonRange& polygons)
 {
   std::vector<std::array<double, 3>> p;
-  for(const auto& q : points) p.push_back(to_double_array(q));
+  for(const auto& q : points) p.push_back(nearest_doubles(q));
   Triangle_fragment_traits_3 traits;
   std::size_t i = 0;
   // an index as it was given: a negative one is not written as the size_t it converts to

@@ -6,6 +6,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -53,6 +54,13 @@ double nearest_double(const NT& x)
     std::memcpy(&bits, &lo, sizeof bits);
     return (bits & 1) == 0 ? lo : hi;
   }
+}
+
+/// the coordinates of a point of a CGAL kernel, each read by `nearest_double()`
+template <class Point>
+std::array<double, 3> nearest_doubles(const Point& p)
+{
+  return {{nearest_double(p.x()), nearest_double(p.y()), nearest_double(p.z())}};
 }
 
 } // namespace internal
