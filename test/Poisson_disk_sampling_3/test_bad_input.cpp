@@ -152,6 +152,15 @@ TEST(BadInput, ParameterGivenTwice)
   EXPECT_EQ(what_thrown<PDS::Invalid_input>(
                 [&] { PDS::is_maximal(m, out, 0.2, CGAL::parameters::vertex_point_map(vpm)); }),
             "no exception");
+  // the sampling parameters, which it would ignore (the distance is its third argument), do not
+  // compile there: the condition of its static_assert
+  EXPECT_TRUE(PDS::internal::has_no_sampling_parameter<decltype(PDS::parameters::vertex_point_map(vpm))>());
+  EXPECT_TRUE(PDS::internal::has_no_sampling_parameter<CGAL::parameters::Default_named_parameters>());
+  EXPECT_FALSE(PDS::internal::has_no_sampling_parameter<decltype(PDS::parameters::radius(0.1))>());
+  EXPECT_FALSE(PDS::internal::has_no_sampling_parameter<decltype(
+                   PDS::parameters::vertex_point_map(vpm).random_seed(3))>());
+  EXPECT_FALSE(PDS::internal::has_no_sampling_parameter<decltype(
+                   PDS::parameters::geom_traits(K()).maximum_number_of_points(10))>());
 }
 
 // A seed is an integer from 0 to 2^64 - 1: a negative one was converted (-1 gave the points of

@@ -63,6 +63,21 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
   return result;
 }
 
+/// whether `NamedParameters` holds none of the sampling functions' own parameters, which `is_maximal()`
+/// would ignore (it takes the distance as an argument: `radius(r)` there asked for nothing)
+template <class NamedParameters>
+constexpr bool has_no_sampling_parameter()
+{
+  using CGAL::parameters::is_default_parameter;
+  return is_default_parameter<NamedParameters, internal_np::radius_t>::value &&
+         is_default_parameter<NamedParameters, internal_np::minimum_distance_t>::value &&
+         is_default_parameter<NamedParameters, internal_np::number_of_points_t>::value &&
+         is_default_parameter<NamedParameters, internal_np::maximum_number_of_points_t>::value &&
+         is_default_parameter<NamedParameters, internal_np::statistics_t>::value &&
+         is_default_parameter<NamedParameters, internal_np::concurrency_t>::value &&
+         is_default_parameter<NamedParameters, CGAL::internal_np::random_seed_t>::value;
+}
+
 } // namespace internal
 
 /// \ingroup PkgPoissonDiskSampling3Ref
@@ -86,7 +101,8 @@ Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& 
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel
-/// @tparam NamedParameters accepts `vertex_point_map` and `geom_traits`, as `sample_triangle_mesh()`
+/// @tparam NamedParameters accepts `vertex_point_map` and `geom_traits`, as `sample_triangle_mesh()`; the
+/// sampling parameters (`radius`, `random_seed`, ...) do not compile here
 ///
 /// @param tm the mesh
 /// @param samples the samples to certify
@@ -101,6 +117,10 @@ auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimu
            const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::check_given_once<NamedParameters>();
+  static_assert(internal::has_no_sampling_parameter<NamedParameters>(),
+                "is_maximal() takes the minimum distance as its third argument, and of the named parameters "
+                "only vertex_point_map and geom_traits: it would ignore radius, random_seed and the other "
+                "sampling parameters");
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_of;
   return internal::check_maximal<typename GT::Point_3>(internal::triangles_of_mesh(tm, np, face_of), samples,
