@@ -8,7 +8,10 @@
 #include "test_support.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_integer.h>
 #include <CGAL/Gmpq.h>
+#include <CGAL/Homogeneous.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <gtest/gtest-spi.h>
@@ -67,6 +70,32 @@ TEST(CoordinateReading, ExactNumbersAreReadAsTheNearestDoubles)
     EXPECT_EQ(PDS::internal::nearest_double(x), before) << i;
     EXPECT_EQ(before, PDS::internal::nearest_double(x.exact())) << i;
   }
+}
+
+// Numbers whose interval overflows though their value is in range, and inexact types, whose
+// comparisons round: for these the narrowing is not used (Homogeneous<double> read 253 of 2,000
+// quotients one unit off with it, and Interval_nt threw), and their quotient is CGAL::to_double()'s.
+TEST(CoordinateReading, OverflowingIntervalsAndInexactTypes)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel::FT FT;
+  const FT big(1e300);
+  EXPECT_EQ(PDS::internal::nearest_double(FT((big * big / FT(3e300)) / big)), 1. / 3); // interval [6e-293, inf]
+  EXPECT_EQ(PDS::internal::nearest_double(FT(FT(1e308) * FT(10))), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(PDS::internal::nearest_double(FT(FT(-1e308) * FT(10))), -std::numeric_limits<double>::infinity());
+  // a homogeneous point whose weight is beyond the doubles: x = 10
+  CGAL::Exact_integer w(1);
+  for(int i = 0; i < 400; ++i) w *= 10;
+  typedef CGAL::Homogeneous<CGAL::Exact_integer> HE;
+  EXPECT_EQ(PDS::internal::nearest_double(HE::Point_3(w * 10, w / 3, 0, w).x()), 10.);
+  EXPECT_EQ(PDS::internal::nearest_double(HE::Point_3(w * 10, w / 3, 0, w).y()), 1. / 3);
+  typedef CGAL::Homogeneous<double> HD;
+  CGAL::Random rng(7);
+  for(int i = 0; i < 200; ++i) {
+    const double p = std::ldexp(rng.get_double(-1, 1), rng.get_int(-30, 30));
+    const double q = std::ldexp(rng.get_double(0.5, 1), rng.get_int(-30, 30));
+    EXPECT_EQ(PDS::internal::nearest_double(HD::Point_3(p, 0, 0, q).x()), p / q) << p << " / " << q;
+  }
+  EXPECT_EQ(PDS::internal::nearest_double(CGAL::Interval_nt<>(1, 1 + 0x1.0p-50)), 1 + 0x1.0p-51);
 }
 
 // With Epeck, a mesh whose coordinates were constructed gives the same points whatever the program
