@@ -27,7 +27,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -527,6 +526,31 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
   } catch(const PDS::Point_limit_exceeded& e) {
     EXPECT_NE(std::string(e.what()).find("exceed 64 times the samples"), std::string::npos) << e.what();
   }
+  // The certificate refuses them alike: a root of negative area was skipped (a set that left it
+  // without a sample was certified), and a negative position error made the margin of its gaps
+  // negative (a maximal set had a witness).
+  const std::vector<std::array<double, 3>> square_samples = sample_square(Square_traits(), 0.1, 0);
+  auto invalid = [](auto&& call) -> std::string {
+    try {
+      call();
+    } catch(const PDS::Invalid_input& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  EXPECT_NE(invalid([&] { PDS::is_maximal_on_surface(Negative_second_root(), square_samples, 0.1); })
+                .find("a fragment of area -1"),
+            std::string::npos);
+  struct Negative_position_error : Square_traits
+  {
+    double position_error() const { return -1e-3; }
+  };
+  ASSERT_TRUE(PDS::is_maximal_on_surface(Square_traits(), square_samples, 0.1));
+  const std::string certified =
+      invalid([&] { PDS::is_maximal_on_surface(Negative_position_error(), square_samples, 0.1); });
+  const std::string sampled = what(Negative_position_error(), PDS::Invalid_input(""));
+  for(const std::string& message : {certified, sampled})
+    EXPECT_NE(message.find("position_error() must be a finite number, not negative"), std::string::npos) << message;
   // by default after 2^30 draws (13 to 22 s); here after 100,000
   const Refuses_every_dart refuses;
   PDS::internal::Dart_throwing_engine<Refuses_every_dart> engine(refuses, 0.1, 0, 1000);

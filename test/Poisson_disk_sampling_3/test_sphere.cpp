@@ -223,6 +223,34 @@ TEST(Certificate, FillingRegionsEndTheRefinement)
   EXPECT_TRUE(PDS::is_maximal_on_polygon_soup(needle, t, samples, d));
 }
 
+// A model whose coverage test never succeeds (a wrong test): the certificate's first phase split
+// every piece that no ball held down to the deferral size, about 2^24 area / d^2 pieces (hours at a
+// few thousand samples). Its decisions are bounded (the budget and 256 per sample and per root), and
+// the answer is undecided.
+TEST(Certificate, FirstPhaseIsBoundedForAModelThatNeverCovers)
+{
+  struct Never_covers : Counting_sphere
+  {
+    using Counting_sphere::Counting_sphere;
+    bool is_covered(const Fragment&, const std::array<double, 3>&, double) const { return false; }
+  };
+  const K::Sphere_3 sphere(CGAL::ORIGIN, 1);
+  const double d = std::sqrt(4 * pi * 0.6965 / 2000);
+  std::vector<Point> points;
+  PDS::sample_sphere(sphere, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+  ASSERT_TRUE(PDS::is_maximal(sphere, points, d));
+  const Never_covers never({{0, 0, 0}}, 1);
+  const std::vector<double> xyz = PDS::internal::coordinates_of(points);
+  PDS::internal::Certificate c;
+  const std::size_t budget = 100000;
+  ASSERT_NO_THROW(c = PDS::internal::certify_coverage(never, PDS::internal::grid_of(xyz, d), d, 48, budget));
+  EXPECT_FALSE(c.maximal);
+  EXPECT_FALSE(c.has_witness);
+  EXPECT_GT(c.uncovered_area, 4 * pi * 0.99); // the whole sphere, not proven covered
+  // each split makes two pieces, each decided once
+  EXPECT_LT(never.splits, long(budget + 256 * (points.size() + 8)));
+}
+
 // A gap that follows the pieces' edges: two samples at the poles of the unit sphere leave a band
 // along the equator uncovered, |z| < 2 rel - rel^2 at d = sqrt(2) (1 - rel). Never answered maximal;
 // a witness down to rel = 10^-6, and undecided below (the pieces along the band fill a region at d to

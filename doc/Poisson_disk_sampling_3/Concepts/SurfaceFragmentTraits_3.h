@@ -32,20 +32,28 @@
 ///   largest initial fragment's but by rounding (2^-20 of it), and `area()` gives the same double for
 ///   the same fragment on every call: the engine files fragments by area relative to the largest
 ///   initial one, and draws them in proportion to the bounds of the range they were filed in;
+/// - `level()`, where defined, counts the splits as said below: the engine drops a fragment still not
+///   covered at depth 40 (it counts it in `Sampling_statistics::dropped_fragments`, and throws
+///   nothing), so a `split()` that does not shrink (one that writes the fragment itself), or a
+///   `level()` far above the number of splits, leaves gaps, which only `is_maximal_on_surface()` finds;
 /// - the operations are `const` and may be called at the same time from several threads: with
 ///   `concurrency(CGAL::Parallel_tag())`, `area()`, `random_sample()`, `point()`, `level()`,
 ///   `is_covered()`, `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's
-///   threads (a model with scratch space or caches must keep them per thread).
+///   threads (a model with scratch space or caches must keep them per thread). An optional operation
+///   is found only with the signature given below, `const` included: one written otherwise is taken
+///   as absent, and not called;
+/// - `position_error()` is a finite number, not negative.
 ///
-/// What the engine checks: a model that gives an area that is not a number, or negative, or above the
+/// What the engine checks: a model that gives a position error that is negative or not finite, an area
+/// that is not a number, or negative (the certificate checks these too, on its roots), or above the
 /// largest initial fragment's beyond rounding, or a fragment's area outside the power-of-two range it
-/// had when the fragment was stored, or that refuses 2^30 darts in a row, gets `Invalid_input`. A
-/// model whose fragments in wait outnumber 64 times its samples so far, its expected points
-/// (area / (pi r^2)) and its initial fragments, plus about a million, gets `Point_limit_exceeded`:
-/// coverage tests that never succeed, or succeed only with a fixed margin, or samples far off the
-/// surface leave places that are never covered, and the fragments there multiply. (The triangle model
-/// keeps fewer than twice the expected points and the initial fragments on CGAL's meshes; without its
-/// cuts of long thin faces, 33 times on a cylinder of 128 needles.)
+/// had when the fragment was stored, or that refuses 2^30 darts in a row, gets `Invalid_input`. A model
+/// whose fragments in wait outnumber 64 times its samples so far, its expected points (area / (pi r^2))
+/// and its initial fragments, plus about a million, gets `Point_limit_exceeded`: coverage tests that
+/// never succeed, or succeed only with a fixed margin, or samples far off the surface leave places that
+/// are never covered, and the fragments there multiply. (The triangle model keeps fewer than twice the
+/// expected points and the initial fragments on CGAL's meshes; without its cuts of long thin faces, 33
+/// times on a cylinder of 128 needles.)
 ///
 /// What it does not check: that the fragments tile the surface, that the samples are uniform and on
 /// their fragments (a sample placed in a neighbouring fragment, or just past the surface's border,
@@ -68,7 +76,8 @@ public:
   /// engine keeps fragments in arrays)
   typedef unspecified_type Fragment;
 
-  /// what is produced for an accepted dart: its point and where it lies on the surface
+  /// what is produced for an accepted dart: its point and where it lies on the surface. Copyable and
+  /// assignable (the engine holds the sample of each dart of a batch in a `std::optional`)
   typedef unspecified_type Sample;
 
   /// @}
@@ -166,8 +175,9 @@ public:
   /// find the samples near `f`, and reported by it as the place of a gap
   std::array<double, 3> reference_point(const Fragment& f) const;
 
-  /// a bound on the distance between a computed point of the surface and the exact one; the engine
-  /// refuses minimum distances below 2^20 times this bound
+  /// a bound on the distance between a computed point of the surface and the exact one, a finite
+  /// number, not negative; the engine and the certificate refuse minimum distances below 2^20 times
+  /// this bound
   double position_error() const;
 
   /// @}

@@ -91,8 +91,9 @@ constexpr bool has_no_sampling_parameter()
 /// as computed, is farther than d from every sample by more than twice the rounding of the surface's
 /// points (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that
 /// the exact point is farther than d; the computed one is reported as `uncovered_point`. The work and
-/// the memory are bounded (10 million pieces in the last phase, 2.5 million waiting at a time, and
-/// pieces that fill a region within rounding of d from the samples are not refined further): on
+/// the memory are bounded (10 million pieces in the last phase, 10 million and 256 per sample and per
+/// face in the first, 2.5 million waiting at a time, and pieces that fill a region within rounding of
+/// d from the samples are not refined further): on
 /// slivers far thinner than d, which midpoint subdivision must cut across as often as along, and on
 /// sets maximal with no margin (a point of the surface at distance d from the samples), the answer
 /// may be `false` with no `uncovered_point`, undecided. Coordinates are read as the nearest doubles.

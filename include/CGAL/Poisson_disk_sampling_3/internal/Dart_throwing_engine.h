@@ -641,14 +641,7 @@ private:
   // The area of a fragment of the model, refused unless it is a number and not negative: a NaN was
   // dropped unsaid (a gap), or read as "no part of positive area", and a child of area 0 or less
   // from refine() stopped the pool at its precondition, or, without assertions, never returned.
-  double checked_area(const Fragment& f) const
-  {
-    const double a = traits_.area(f);
-    if(!(a >= 0))
-      throw Invalid_input("the surface model gave a fragment of area " + number_text(a) +
-                          "; areas must be numbers, not negative");
-    return a;
-  }
+  double checked_area(const Fragment& f) const { return internal::checked_area(traits_, f); }
 
   // A fragment is filed by its area when it is pushed, and drawn in proportion to the bounds of its
   // bin: an area that has left them since would be drawn as often as one it no longer is.

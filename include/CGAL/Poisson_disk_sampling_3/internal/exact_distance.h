@@ -9,6 +9,8 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/enum.h>
 
+#include <cmath>
+
 #include <string>
 
 namespace CGAL {
@@ -40,6 +42,9 @@ inline void check_distance_range(double d, const std::string& what = std::string
 /// names `d` by `what` where given, as check_distance_range() does.
 inline void check_distance_precision(double d, double position_error, const std::string& what = std::string())
 {
+  if(!(position_error >= 0) || !std::isfinite(position_error))
+    throw Invalid_input("the surface model gave the position error " + number_text(position_error) +
+                        "; position_error() must be a finite number, not negative");
   if(!(d > 0x1.0p20 * position_error))
     throw Invalid_input((what.empty() ? "the minimum distance " + number_text(d) : what) +
                         " is too small for the precision of the coordinates (rounding error " +

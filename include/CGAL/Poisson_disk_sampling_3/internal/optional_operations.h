@@ -4,6 +4,8 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_OPTIONAL_OPERATIONS_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_OPTIONAL_OPERATIONS_H
 
+#include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+
 #include <array>
 #include <cstddef>
 #include <iterator>
@@ -129,13 +131,25 @@ struct Calling_output
   }
 };
 
+/// a fragment's area, refused (`Invalid_input`) unless it is a number and not negative: a model's error,
+/// which the engine and the certificate report alike
+template <class Traits>
+double checked_area(const Traits& traits, const typename Traits::Fragment& f)
+{
+  const double a = traits.area(f);
+  if(!(a >= 0))
+    throw Invalid_input("the surface model gave a fragment of area " + number_text(a) +
+                        "; areas must be numbers, not negative");
+  return a;
+}
+
 /// the area of a model's surface: the sum of the areas of `initial_fragments(out)`, summed as the
 /// roots are made, not stored (32 bytes a face: 106 MB on a mesh of 3.3 million faces)
 template <class Traits>
 double total_area(const Traits& traits)
 {
   double a = 0;
-  auto add = [&](const typename Traits::Fragment& f) { a += traits.area(f); };
+  auto add = [&](const typename Traits::Fragment& f) { a += checked_area(traits, f); };
   traits.initial_fragments(Calling_output(&add));
   return a;
 }
