@@ -86,19 +86,19 @@ constexpr bool has_no_sampling_parameter()
 ///
 /// Each face is split by midpoints (a face much longer than d is first cut into blocks of rows, which
 /// are halved) until the ball of radius d around one sample holds the corners of each piece, with a
-/// margin larger than the rounding error of the corners, down to pieces 2^-48 the size of their face.
-/// A `true` answer is a proof. A piece whose reference point (a triangle's centroid, a block's middle),
+/// margin larger than the rounding error of the corners, down to pieces 2^-48 the size of their face. A
+/// `true` answer is a proof. A piece whose reference point (a triangle's centroid, a block's middle),
 /// as computed, is farther than d from every sample by more than twice the rounding of the surface's
 /// points (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that
 /// the exact point is farther than d; the computed one is reported as `uncovered_point`. The work and
 /// the memory are bounded (10 million pieces in the last phase, 10 million and 256 per sample and per
-/// face in the first, 2.5 million waiting at a time, and pieces that fill a region within rounding of
-/// d from the samples are not refined further): on
-/// slivers far thinner than d, which midpoint subdivision must cut across as often as along, and on
-/// sets maximal with no margin (a point of the surface at distance d from the samples), the answer
-/// may be `false` with no `uncovered_point`, undecided. Coordinates are read as the nearest doubles.
-/// The samples are not required to lie on the surface (any points may be certified), and faces of
-/// zero area (corners on one line) are skipped, as the sampler skips them.
+/// face in the first, 2.5 million waiting at a time, and pieces that fill a region within rounding of d
+/// from the samples are not refined further): on slivers far thinner than d, which midpoint subdivision
+/// must cut across as often as along, and on sets maximal with no margin (a point of the surface at
+/// distance d from the samples), the answer may be `false` with no `uncovered_point`, undecided.
+/// Coordinates are read as the nearest doubles. The samples are not required to lie on the surface (any
+/// points may be certified), and faces of zero area (corners on one line) are skipped, as the sampler
+/// skips them.
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// @tparam PointRange a range of `Point_3` of any CGAL kernel

@@ -154,10 +154,10 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
   // The first phase's work: pieces that no ball holds are split down to the deferral size, and a
   // model whose is_covered() never succeeds (a wrong test) would have the whole surface split so,
-  // about 2^24 area / d^2 decisions (hours at a few thousand samples). Past `budget` decisions and 256
-  // per sample and per root, such pieces count as not proven covered, without being split. (Maximal
-  // sets took 3 to 44 per sample and root, counted on CGAL's meshes at 1,000 to 100,000 points, and
-  // on a needle 2^14 d long, the most.)
+  // about 2^24 area / d^2 decisions (270 million on a unit square at d = 0.25, four times as many each
+  // time d halves). Past `budget` decisions and 256 per sample and per root, such pieces count as not
+  // proven covered, without being split. (Maximal sets took 3 to 44 per sample and root, counted on
+  // CGAL's meshes at 1,000 to 100,000 points, and on a needle 2^14 d long, the most.)
   std::size_t roots = 0;
   const auto over_budget = [&] { return decisions > budget + 256 * (samples.size() + roots); };
   auto certify_root = [&](const Fragment& root) {

@@ -10,7 +10,6 @@
 #include <CGAL/enum.h>
 
 #include <cmath>
-
 #include <string>
 
 namespace CGAL {
