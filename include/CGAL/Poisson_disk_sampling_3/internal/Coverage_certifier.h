@@ -81,11 +81,10 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
 
   enum Verdict { COVERED, GAP_LEAF, SPLIT };
   // decides one piece; records a proven gap
-  std::size_t decided_after_gap = 0, decisions = 0;
+  std::size_t decisions = 0, decisions_at_gap = 0; // all pieces decided; those when a gap was first proven
   bool ref_at_d = false; // the last piece decided has its reference point at d from the samples
   auto decide = [&](const Item& item) {
     ++decisions;
-    decided_after_gap += result.has_witness;
     const std::array<double, 3> ref = traits.reference_point(item.fragment);
     near.clear();
     bool ref_near = false; // a sample within d_gap of the reference point: no gap proven there
@@ -104,6 +103,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     result.maximal = false;
     if(!result.has_witness) {
       result.has_witness = true;
+      decisions_at_gap = decisions;
       result.witness = ref;
     }
     return traits.area(item.fragment) <= leaf_area ? GAP_LEAF : SPLIT;
@@ -178,7 +178,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       // quarter of the budget of decisions spent on it, a piece of leaf size that no single ball holds
       // counts whole instead of being refined across the balls' boundaries down to the deferral size,
       // which costs time and memory in proportion to the boundaries' length over that size.
-      else if(result.has_witness && area <= leaf_area && decided_after_gap > budget / 4)
+      else if(result.has_witness && area <= leaf_area && decisions - decisions_at_gap > budget / 4)
         result.uncovered_area += area;
       else if(filling && area <= fill_area) not_proven(item);
       else if(area <= defer_area || item.depth >= max_depth) defer(item, deferred);
