@@ -25,12 +25,16 @@
 #include <algorithm>
 #include <atomic>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
+#include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -318,6 +322,75 @@ TEST(Engine, ThreadsGiveTheSamePointsOnAUserModel)
     ASSERT_EQ(parallel.size(), sequential.size()) << refuse_half;
     EXPECT_GT(sequential.size(), 20000u);
     for(std::size_t i = 0; i < sequential.size(); ++i) ASSERT_EQ(parallel[i].point, sequential[i].point) << i;
+  }
+}
+
+// The square cut into 64 x 64 roots, whose operations fail on every fragment, naming it: in
+// random_sample(), or in its refine(), which throws on half of them and gives the others a child of
+// negative area (refused by the engine as it pushes the children: after every dart's refine() on
+// threads, before the next dart's refine() in a sequential run). Each failure on the calling thread
+// waits first, so that on TBB's threads another dart's exception is thrown first.
+class Failing_square : public Square_traits
+{
+public:
+  enum Where { in_random_sample, in_refine };
+  explicit Failing_square(Where where) : where_(where), caller_(std::this_thread::get_id()) {}
+
+  template <class Out> Out initial_fragments(Out out) const
+  {
+    for(int i = 0; i < 64; ++i)
+      for(int j = 0; j < 64; ++j) *out++ = Fragment{i / 64., j / 64., 1 / 64.};
+    return out;
+  }
+  double area(const Fragment& f) const { return f.size < 0 ? f.size : f.size * f.size; }
+  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const
+  {
+    if(where_ == in_random_sample) fail("random_sample() on fragment " + std::to_string(index(f)));
+    return Square_traits::random_sample(f, rng);
+  }
+  template <class PointRange, class OutputIterator>
+  bool refine(const Fragment& f, const PointRange&, const PointRange&, double, OutputIterator children) const
+  {
+    if(index(f) % 2 == 0) fail("refine() on fragment " + std::to_string(index(f)));
+    wait();
+    *children++ = Fragment{f.x, f.y, -double(index(f))};
+    return false;
+  }
+
+private:
+  static long index(const Fragment& f) { return 1 + std::lround(f.x * 64) * 64 + std::lround(f.y * 64); }
+  void wait() const
+  {
+    if(std::this_thread::get_id() == caller_) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    wait();
+    throw std::runtime_error(what);
+  }
+  Where where_;
+  std::thread::id caller_;
+};
+
+// On TBB's threads, the exception from a model is the one of the sequential run: the first in the
+// order of its darts and stages, not the first to be thrown on some thread.
+TEST(Engine, ThreadsThrowTheSequentialRunsException)
+{
+  for(Failing_square::Where where : {Failing_square::in_random_sample, Failing_square::in_refine}) {
+    const Failing_square traits(where);
+    auto failure = [&](auto tag) {
+      std::vector<Square_traits::Sample> samples;
+      try {
+        PDS::sample_surface(traits, std::back_inserter(samples),
+                            PDS::parameters::minimum_distance(0.005).random_seed(4).concurrency(tag));
+      } catch(const std::exception& e) {
+        return std::string(e.what());
+      }
+      return std::string("no exception");
+    };
+    const std::string sequential = failure(CGAL::Sequential_tag());
+    EXPECT_NE(sequential.find(" fragment"), std::string::npos) << sequential;
+    for(int run = 0; run < 3; ++run) EXPECT_EQ(failure(CGAL::Parallel_tag()), sequential) << where;
   }
 }
 

@@ -39,7 +39,9 @@
 /// - the operations are `const` and may be called at the same time from several threads: with
 ///   `concurrency(CGAL::Parallel_tag())`, `area()`, `random_sample()`, `point()`, `level()`,
 ///   `is_covered()`, `is_covered_by_union()`, `split()`, `refine()` and `prefetch()` run on TBB's
-///   threads (a model with scratch space or caches must keep them per thread). An optional operation
+///   threads (a model with scratch space or caches must keep them per thread); an exception they throw
+///   reaches the caller, the same one as in a sequential run (the first in the order of its darts),
+///   after the other threads' calls of the batch have returned. An optional operation
 ///   is found only with the signature given below, `const` included: one written otherwise is taken
 ///   as absent, and not called;
 /// - `position_error()` is a finite number, not negative.

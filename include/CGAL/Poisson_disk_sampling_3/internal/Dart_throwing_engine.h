@@ -16,6 +16,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
+
+#include <mutex>
 #endif
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -319,8 +322,9 @@ public:
       clock.lap(stats.stage_seconds[draw_stage]);
       // Each dart draws its point from a generator of its own, seeded above: what it draws does not
       // depend on which thread throws it, or in which order.
-      auto throw_darts = [&](std::size_t first, std::size_t last, std::vector<std::uint32_t>& hits, bool timed) {
+      auto throw_darts = [&](std::size_t first, std::size_t last, Scratch& scratch, bool timed) {
         auto lap = [&](Engine_stage stage) {
+          scratch.stage = int(stage) + 1;
           if(timed) clock.lap(stats.stage_seconds[stage]);
         };
         for(std::size_t k = first; k < last; ++k) {
@@ -370,14 +374,14 @@ public:
           if(k + lookahead < last) Neighbor_buckets::prefetch_points(darts[k + lookahead].bucket);
           near[k].clear();
           around[k].clear();
-          if(d.bucket) gather_near(*d.bucket, d.point, near[k], around[k], hits);
+          if(d.bucket) gather_near(*d.bucket, d.point, near[k], around[k], scratch.hits);
           d.free = true;
           for(std::size_t i = 0; i < near[k].size() && d.free; ++i)
             d.free = compare_distance_exact(d.point.data(), near[k][i].data(), d_) != CGAL::SMALLER;
         }
         lap(scan_stage);
       };
-      for_each_dart(darts.size(), throw_darts);
+      for_each_dart(darts.size(), throw_darts).rethrow();
       // (on threads, the stages from `fragment` to `scan` are not timed apart: all of it as `scan`)
       if(in_parallel(darts.size())) clock.lap(stats.stage_seconds[scan_stage]);
       std::size_t thrown = 0;
@@ -453,12 +457,20 @@ public:
         stats.darts_on_covered += !d.accepted && kids.empty();
       };
       if(in_parallel(darts.size())) {
-        // the same calls in the same order, but for refine(), which reads only the dart's own data
+        // the same calls in the same order, but for refine(), which reads only the dart's own data; an
+        // exception is the one a sequential run meets first: the children of the darts before the
+        // first refine() that threw are pushed, which may throw before it
         for(std::size_t k = 0; k < darts.size(); ++k) take(k);
-        for_each_dart(darts.size(), [&](std::size_t first, std::size_t last, std::vector<std::uint32_t>&, bool) {
-          for(std::size_t k = first; k < last; ++k) refine_dart(k, children[k]);
+        const First_error error = for_each_dart(darts.size(), [&](std::size_t first, std::size_t last,
+                                                                  Scratch& scratch, bool) {
+          for(std::size_t k = first; k < last; ++k) {
+            scratch.dart = k;
+            refine_dart(k, children[k]);
+          }
         });
-        for(std::size_t k = 0; k < darts.size(); ++k) push_children(k, children[k]);
+        const std::size_t pushed = error.exception ? error.dart : darts.size();
+        for(std::size_t k = 0; k < pushed; ++k) push_children(k, children[k]);
+        error.rethrow();
       } else {
         for(std::size_t k = 0; k < darts.size(); ++k) {
           take(k);
@@ -538,28 +550,69 @@ private:
 
   static constexpr std::size_t none = std::size_t(-1);
 
+  // What a body of for_each_dart() works with: the scan's scratch, and where the body is in the order
+  // of a sequential run (its stage, and its first dart or the dart it is at), for the exception
+  // that such a run would meet first
+  struct Scratch
+  {
+    std::vector<std::uint32_t> hits;
+    int stage = 0;
+    std::size_t dart = 0;
+  };
+
+  // The exception of a parallel loop that comes first in the order of a sequential run, if any
+  struct First_error
+  {
+    std::exception_ptr exception;
+    int stage = 0;
+    std::size_t dart = 0;
+    void rethrow() const
+    {
+      if(exception) std::rethrow_exception(exception);
+    }
+  };
+
   // Calls body(first, last, scratch, timed) on ranges that cover [0, n): the whole of it on this
   // thread, with `timed` true (the stage clock may be read), or, in parallel mode, ranges of at most
-  // `grain` darts on TBB's threads, each thread with its own scratch, `timed` false.
+  // `grain` darts on TBB's threads, each thread with its own scratch, `timed` false. What the body
+  // throws on this thread reaches the caller; on threads, it is returned (see below).
   template <class Body>
-  void for_each_dart(std::size_t n, Body&& body)
+  First_error for_each_dart(std::size_t n, Body&& body)
   {
 #ifdef CGAL_LINKED_WITH_TBB
     if(in_parallel(n)) {
       // In a context of its own, not the caller's: in a context that is cancelled (the caller's
       // tbb::task_group, once another of its tasks has thrown or called cancel()), parallel_for
       // returns at once, without running its body and without throwing, and the batch went on with
-      // the darts of the one before (the same samples accepted again and again, for minutes). Its own
-      // body's exceptions still reach the caller.
+      // the darts of the one before (the same samples accepted again and again, for minutes).
+      // Each range catches what it throws, and the others go on: the exception returned is the one
+      // of the earliest stage, then of the earliest dart, the one a sequential run would throw (the
+      // first to be thrown, which TBB would pass on, depends on the threads' timing). Within a
+      // range, a stage goes through its darts in order, so that the range's first dart stands for
+      // the one that threw, unless the body says which one it is at (`scratch.dart`).
       tbb::task_group_context context(tbb::task_group_context::isolated);
+      First_error first;
       tbb::parallel_for(
           tbb::blocked_range<std::size_t>(0, n, grain),
-          [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end(), scratch_.local(), false); },
+          [&](const tbb::blocked_range<std::size_t>& r) {
+            Scratch& scratch = scratch_.local();
+            scratch.stage = 0;
+            scratch.dart = r.begin();
+            try {
+              body(r.begin(), r.end(), scratch, false);
+            } catch(...) {
+              const std::lock_guard<std::mutex> lock(error_mutex_);
+              const auto at = std::make_pair(scratch.stage, scratch.dart);
+              if(!first.exception || at < std::make_pair(first.stage, first.dart))
+                first = First_error{std::current_exception(), scratch.stage, scratch.dart};
+            }
+          },
           context);
-      return;
+      return first;
     }
 #endif
-    body(0, n, hits_, true);
+    body(0, n, scratch_0_, true);
+    return First_error();
   }
   static constexpr std::size_t grain = 32;
 
@@ -679,9 +732,10 @@ private:
   }
 
   const Traits& traits_;
-  std::vector<std::uint32_t> hits_; // scratch of gather_near()
+  Scratch scratch_0_; // of the body of for_each_dart() on this thread
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<std::vector<std::uint32_t>> scratch_;
+  tbb::enumerable_thread_specific<Scratch> scratch_;
+  std::mutex error_mutex_;
 #endif
   bool parallel_ = false;
   double d_;
