@@ -17,15 +17,15 @@
 /// - the initial fragments tile the surface, and the children of a fragment tile it;
 /// - `random_sample()` is uniform with respect to area on the fragment (or, for models that sample
 ///   with rejection, uniform once accepted, and accepted with positive probability: a model that
-///   refuses 2^30 darts in a row gets `Invalid_input`);
+///   refuses every dart for more than 2^30 draws in a row, the pool's own rejections included, gets
+///   `Invalid_input`);
 /// - `is_covered()` is conservative: it returns `true` only if every point of the fragment is within
 ///   `radius` of `center`, rounding included; and conservative by no more than its rounding error,
 ///   or by a margin that shrinks with the fragment. A fixed margin m leaves the points whose nearest
 ///   sample is between D - m and D away unproven for good: no dart is accepted there (they are within
 ///   D of a sample) and no fragment there is ever proven covered, so the fragments there multiply
-///   four times a level down to the depth floor, and the engine stops with `Point_limit_exceeded`. (A
-///   model of a unit square whose test shrank D by 10^-6 of it was stopped so at 175,000 points, and
-///   sampled them with 10^-8: the larger the sample, the more such places there are.);
+///   four times a level down to the depth floor, and the engine stops with `Point_limit_exceeded`
+///   (the larger the sample, the more such places there are);
 /// - splitting shrinks fragments, so that a fragment smaller than a ball's margin is covered by it;
 /// - areas are numbers, not negative (a fragment of area 0 is skipped: it must hold no part of the
 ///   surface of positive area, or that part is never sampled), no fragment's area is above the
@@ -49,8 +49,8 @@
 /// What the engine checks: a model that gives a position error that is negative or not finite, an area
 /// that is not a number, or negative (the certificate checks these too, on its roots), or above the
 /// largest initial fragment's beyond rounding, or a fragment's area outside the power-of-two range it
-/// had when the fragment was stored, or that refuses 2^30 darts in a row, gets `Invalid_input`. A model
-/// whose fragments in wait outnumber 64 times its samples so far, its expected points (area / (pi r^2))
+/// had when the fragment was stored, or that refuses every dart for more than 2^30 draws in a row, gets
+/// `Invalid_input`. A model whose fragments in wait outnumber 64 times its samples so far, its expected points (area / (pi r^2))
 /// and its initial fragments, plus about a million, gets `Point_limit_exceeded`: coverage tests that
 /// never succeed, or succeed only with a fixed margin, or samples far off the surface leave places that
 /// are never covered, and the fragments there multiply. (The triangle model keeps fewer than twice the

@@ -32,7 +32,8 @@ namespace Poisson_disk_sampling_3 {
 /// theta uniform, cos(phi) uniform.
 ///
 /// Splitting: a rectangle is halved across its longer side on the sphere, into two children of equal
-/// area. (The paper's four children, both ranges halved, make cells near the poles thin slivers,
+/// area. (The paper does not say how a rectangle is split; four children, both ranges halved, as for
+/// triangles, make cells near the poles thin slivers,
 /// (pi / 2) rho^2 as wide as they are long at distance rho from the axis, since a range of heights is
 /// long and a range of longitudes short there: on the unit sphere at about a million points, a
 /// fifth of the darts went to the thousandth of the area within 2.6 degrees of the poles.)
@@ -44,7 +45,7 @@ namespace Poisson_disk_sampling_3 {
 /// exactly.
 ///
 /// Coverage: the paper tests the four corners of a rectangle against the ball, which fails near the
-/// poles, where the edges of constant phi are not great circles and bulge out of the ball between two
+/// poles (the paper says so, and gives no test for them), where the edges of constant phi are not great circles and bulge out of the ball between two
 /// inside corners. `is_covered()` instead finds the minimum over the whole rectangle of the distance
 /// criterion in closed form (corners, the extreme point of each edge, the antipode), so it is right
 /// everywhere.

@@ -71,7 +71,8 @@ namespace Poisson_disk_sampling_3 {
 /// triangle, cuts a needle along its length as often as across it, and was slower still (see
 /// `benchmark/README.md`, change 43).
 ///
-/// Chord cuts (not in the paper): when a dart finds a fragment at most 4 D across partly covered, and
+/// Chord cuts (the paper's Section 7 clips along an approximate dart boundary, cutting off free
+/// surface; these cuts cut off only what a ball provably holds, see design.md, "Chord cuts"): when a dart finds a fragment at most 4 D across partly covered, and
 /// a ball of `near` holds one or two of its corners, `refine()` cuts off the part of the fragment
 /// that the ball holds, up to the chord between two points of its edges: a triangle at one corner,
 /// or a quadrilateral along an edge. The chord's ends are multiples of 1/64 of their edges (of a

@@ -29,7 +29,10 @@ public:
 /// `maximum_number_of_points` (default 100 million): the estimate area / (pi r^2) of a radius request,
 /// or the target of a `number_of_points` request, is checked first, and the actual count while sampling
 /// a radius request (thin or scattered surfaces can exceed the estimate; the runs of a
-/// `number_of_points` search stop at the bound instead, see `Target_not_reached`). Also thrown, before
+/// `number_of_points` search stop at the bound instead, see `Target_not_reached`). A `number_of_points`
+/// search throws it too when it would try a distance at which area / (pi r^2) exceeds four times the
+/// bound plus 64 (faces that overlap, or lie closer to each other than the distance, each count in
+/// the area, and a run's time and memory follow it). Also thrown, before
 /// any piece is stored, when a model's roots for the distance (the optional `initial_fragments(out, d)`
 /// of `SurfaceFragmentTraits_3`) would outnumber its faces by more than four times that bound plus six
 /// per face, the memory those take; and while sampling, when a model's fragments in wait outnumber 64

@@ -560,8 +560,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///         negative seed or a surface with no area, before any sample is written; and while sampling,
 ///         for a model that breaks the rules of `SurfaceFragmentTraits_3` the engine checks (an area
 ///         that is not a number or negative, a fragment larger than the largest initial one, an area
-///         that changed between the calls of `area()`, 2^30 refused darts in a row), after which `out`
-///         may have received some samples.
+///         that changed between the calls of `area()`, more than 2^30 draws in a row without a
+///         dart), after which `out` may have received some samples.
 /// \throws Point_limit_exceeded when the bound is exceeded: before any sample is written for the
 ///         estimate, while sampling a radius request for the actual count (a surface that needs more
 ///         samples than its area predicts) and for a model whose fragments in wait outnumber the bound of
