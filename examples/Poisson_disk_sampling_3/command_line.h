@@ -14,12 +14,17 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iostream>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace examples {
 
@@ -54,8 +59,77 @@ struct Seen_options
   }
 };
 
-/// whether argv[i] asks for the usage; main() then prints it and returns 0
+/// whether argv[i] asks for the usage; main() then prints it and `exit_statuses` and returns 0
 inline bool is_help(const std::string& a) { return a == "--help" || a == "-h"; }
+
+/// what the programs' exit statuses mean
+constexpr const char* exit_statuses =
+    "exit status: 0 when the samples were written, a Poisson-disk set certified maximal; 1 after an\n"
+    "error, or when their validation failed or was undecided; 2 for a command line it cannot use\n";
+
+/// the file name after argv[i] (`-o`); advances i. A name that starts with '-' is refused as an option
+/// given by mistake (`-o --radius 0.1` wrote to a file "--radius"): write ./-name for such a file.
+inline std::string read_file_name(int argc, char** argv, int& i)
+{
+  const std::string option = argv[i];
+  if(i + 1 >= argc) throw Usage_error("missing file name after " + option);
+  const std::string name = argv[++i];
+  if(name.empty() || name[0] == '-')
+    throw Usage_error(option + " takes a file name, not \"" + name + "\" (for a file of that name: ./" + name + ")");
+  return name;
+}
+
+/// Closes `out`, the file `name` being written, and throws unless all of it was written: the last
+/// buffer is written when the file is closed (on a full disk, a small output was lost unsaid).
+inline void close_output(std::ofstream& out, const std::string& name)
+{
+  out.close();
+  if(!out) throw std::runtime_error("cannot write " + name);
+}
+
+/// Prints `report` on the standard output and returns the exit status: 0 if the samples are valid
+/// (a Poisson-disk set, certified maximal), else 1, with a line on the standard error, as when the
+/// report cannot be written.
+inline int report(const std::string& report, bool valid)
+{
+  std::cout << report << std::flush;
+  if(!std::cout) {
+    std::cerr << "error: cannot write the report to the standard output\n";
+    return 1;
+  }
+  if(!valid) {
+    std::cerr << "error: the samples' validation failed or was undecided (is_poisson_disk_set, is_maximal)\n";
+    return 1;
+  }
+  return 0;
+}
+
+/// The file `name` of the examples' data: CGAL's meshes in the build tree, then the data folder
+/// installed beside the program (found from the program's own path, so that an installation made
+/// with `cmake --install build --prefix <prefix>` under another prefix than the configured one, or
+/// moved, still finds it), then the configured prefix's, then the working folder.
+inline std::string data_file(const std::string& name)
+{
+  std::vector<std::filesystem::path> folders;
+#ifdef CGAL_PDS_DATA_DIR
+  folders.push_back(CGAL_PDS_DATA_DIR);
+#endif
+#ifdef CGAL_PDS_DATA_DIR_FROM_PROGRAM
+  std::error_code error;
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+  if(!error) folders.push_back(program.parent_path() / CGAL_PDS_DATA_DIR_FROM_PROGRAM);
+#endif
+#ifdef CGAL_PDS_INSTALLED_DATA_DIR
+  folders.push_back(CGAL_PDS_INSTALLED_DATA_DIR);
+#endif
+  folders.push_back(".");
+  for(const std::filesystem::path& folder : folders) {
+    std::error_code error;
+    const std::filesystem::path path = folder / name;
+    if(std::filesystem::is_regular_file(path, error)) return path.string();
+  }
+  return name;
+}
 
 struct Size_options
 {

@@ -18,6 +18,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Poisson_disk_sampling_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
@@ -31,6 +32,9 @@
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <set>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,20 +54,59 @@ int usage(const char* message)
   return 2;
 }
 
-std::string default_mesh()
+// CGAL 5.5's PLY reader dereferences a null pointer where a vertex coordinate is not a float or a
+// double (an int, a list) and where a property comes before any element, and reads a coordinate that
+// is missing as 0 (another surface, unsaid): the header of a PLY file is checked first. Returns what
+// is wrong with it, or nothing (also for a file that is no PLY, which CGAL's readers judge).
+std::string ply_header_problem(const std::string& path)
 {
-  for(const char* dir : {
-#ifdef CGAL_PDS_DATA_DIR
-          CGAL_PDS_DATA_DIR,
-#endif
-#ifdef CGAL_PDS_INSTALLED_DATA_DIR
-          CGAL_PDS_INSTALLED_DATA_DIR,
-#endif
-          "."}) {
-    const std::string path = std::string(dir) + "/lion.off";
-    if(std::ifstream(path)) return path;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  // the header's lines, read up to 1 MB in all (a file of zeros has no line end)
+  std::size_t budget = std::size_t(1) << 20;
+  auto next_line = [&] {
+    line.clear();
+    for(char c; budget > 0 && in.get(c); --budget) {
+      if(c == '\n') {
+        if(!line.empty() && line.back() == '\r') line.pop_back();
+        return true;
+      }
+      line.push_back(c);
+    }
+    return false;
+  };
+  if(!next_line() || line != "ply") return std::string();
+  bool any_element = false, in_vertices = false, has_vertices = false;
+  std::set<std::string> coordinates;
+  while(next_line()) {
+    std::istringstream words(line);
+    std::string keyword, type, name;
+    words >> keyword;
+    if(keyword == "end_header") {
+      if(has_vertices)
+        for(const char* c : {"x", "y", "z"})
+          if(!coordinates.count(c)) return std::string("its vertices have no ") + c + " coordinate";
+      return std::string();
+    }
+    if(keyword == "element") {
+      words >> name;
+      any_element = true;
+      in_vertices = name == "vertex";
+      has_vertices = has_vertices || in_vertices;
+    } else if(keyword == "property") {
+      if(!any_element) return "a property comes before any element";
+      words >> type;
+      if(type == "list") words >> name >> name; // the types of the count and of the items
+      words >> name;
+      if(in_vertices && (name == "x" || name == "y" || name == "z")) {
+        if(type != "float" && type != "double" && type != "float32" && type != "float64")
+          return "its vertices' " + name + " coordinate is " + (type == "list" ? "a list" : "of type " + type) +
+                 "; this program reads coordinates of type float or double";
+        coordinates.insert(name);
+      }
+    }
   }
-  return "lion.off";
+  return "its header has no end_header line within its first megabyte";
 }
 
 template <class Sample>
@@ -79,7 +122,7 @@ void write_ply(const std::string& path, const std::vector<Sample>& samples)
     out.write(reinterpret_cast<const char*>(v), sizeof v); // x86 and ARM are little-endian
     out.write(reinterpret_cast<const char*>(&f), sizeof f);
   }
-  if(!out) throw std::runtime_error("cannot write " + path);
+  examples::close_output(out, path);
 }
 
 // Samples with `sample(np, out)`, validates with `is_maximal(points, d)`, writes the PLY and prints the
@@ -103,17 +146,28 @@ int sample_and_report(const std::string& mesh_file, const char* kind, std::size_
   const auto maximal = is_maximal(points, stats.minimum_distance);
   write_ply(out_file, samples);
 
-  std::cout << "mesh: " << mesh_file << "\n"
-            << "read_as: " << kind << "\n"
-            << "faces: " << faces << "\n"
-            << "points: " << samples.size() << "\n"
-            << "minimum_distance: " << stats.minimum_distance << "\n"
-            << "seconds: " << seconds << "\n"
-            << "points_per_second: " << double(samples.size()) / seconds << "\n"
-            << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
-            << "is_maximal: " << examples::maximality_text(maximal) << "\n"
-            << "output: " << out_file << "\n";
-  return pds && bool(maximal) ? 0 : 1;
+  std::ostringstream text;
+  text << "mesh: " << mesh_file << "\n"
+       << "read_as: " << kind << "\n"
+       << "faces: " << faces << "\n"
+       << "points: " << samples.size() << "\n"
+       << "minimum_distance: " << stats.minimum_distance << "\n"
+       << "seconds: " << seconds << "\n"
+       << "points_per_second: " << double(samples.size()) / seconds << "\n"
+       << "darts: " << stats.darts << "\n"
+       << "dropped_fragments: " << stats.dropped_fragments << "\n"
+       << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
+       << "is_maximal: " << examples::maximality_text(maximal) << "\n"
+       << "output: " << out_file << "\n";
+  return examples::report(text.str(), pds && bool(maximal));
+}
+
+// whether a polygon names one point twice (orient_polygon_soup() requires that none does)
+bool repeats_a_vertex(const Polygons& polygons)
+{
+  for(const auto& p : polygons)
+    if(std::set<std::size_t>(p.begin(), p.end()).size() != p.size()) return true;
+  return false;
 }
 
 // the area of a soup of triangles whose indices are checked
@@ -136,13 +190,13 @@ int main(int argc, char** argv)
     for(int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       if(examples::is_help(a)) {
-        std::cout << usage_line;
+        std::cout << usage_line << examples::exit_statuses;
         return 0;
       }
       if(size.read(argc, argv, i, seen)) continue;
-      if(a == "-o" && i + 1 < argc) {
+      if(a == "-o") {
         seen.once(a);
-        out_file = argv[++i];
+        out_file = examples::read_file_name(argc, argv, i);
       } else if(!a.empty() && a[0] == '-') throw examples::Usage_error("unknown option or missing value: " + a);
       else if(mesh_file.empty()) mesh_file = a;
       else throw examples::Usage_error("more than one mesh");
@@ -151,13 +205,24 @@ int main(int argc, char** argv)
   } catch(const examples::Usage_error& e) {
     return usage(e.what());
   }
-  if(mesh_file.empty()) mesh_file = default_mesh();
+  if(mesh_file.empty()) mesh_file = examples::data_file("lion.off");
 
   try {
+    const std::string ply_problem = ply_header_problem(mesh_file);
+    if(!ply_problem.empty()) {
+      std::cerr << "error: cannot read " << mesh_file << ": " << ply_problem << "\n";
+      return 1;
+    }
     // The file's polygons, read once, checked, then made into a mesh where they make a valid one.
     std::vector<K::Point_3> soup_points;
     Polygons soup_polygons;
-    if(!CGAL::IO::read_polygon_soup(mesh_file, soup_points, soup_polygons)) {
+    bool read = false;
+    try {
+      read = CGAL::IO::read_polygon_soup(mesh_file, soup_points, soup_polygons);
+    } catch(const std::length_error&) {
+      // a count of the file that no vector can hold (a negative one, read as unsigned)
+    }
+    if(!read) {
       std::cerr << "error: cannot read a polygon mesh or polygon soup from " << mesh_file << "\n";
       return 1;
     }
@@ -180,6 +245,16 @@ int main(int argc, char** argv)
     const std::string not_triangles_text = faces_text(not_triangles) + " of " + mesh_file +
                                            (not_triangles == 1 ? " is not a triangle" : " are not triangles");
 
+    // Polygons that are not triangles are triangulated on a mesh: where they make no valid one (faces
+    // oriented inconsistently, a vertex or an edge where sheets meet), they are oriented first, and
+    // points are duplicated where sheets meet (the same surface). Triangles that make no valid mesh are
+    // sampled as they are, as a soup.
+    bool oriented = false;
+    if(not_triangles > 0 && !CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_polygons) &&
+       !repeats_a_vertex(soup_polygons)) {
+      CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup_polygons);
+      oriented = true;
+    }
     if(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_polygons)) {
       Mesh mesh;
       CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_polygons, mesh);
@@ -190,9 +265,10 @@ int main(int argc, char** argv)
                   << "failed (a degenerate or self-intersecting face?); the library samples triangles only\n";
         return 1;
       }
-      const std::string kind = not_triangles == 0 ? std::string("polygon mesh")
-                               : "polygon mesh, " + faces_text(not_triangles) +
-                                     " triangulated (face indices are the triangulated mesh's)";
+      const std::string read_as = oriented ? "polygon soup, oriented into a polygon mesh" : "polygon mesh";
+      const std::string kind = not_triangles == 0 ? read_as
+                                                  : read_as + ", " + faces_text(not_triangles) +
+                                                        " triangulated (face indices are the triangulated mesh's)";
       return sample_and_report<PDS::Triangle_sample<K, Mesh::Face_index>>(
           mesh_file, kind.c_str(), num_faces(mesh), CGAL::Polygon_mesh_processing::area(mesh), size, out_file,
           [&](const auto& np, auto out) { PDS::sample_triangle_mesh_with_locations(mesh, out, np); },
@@ -200,9 +276,8 @@ int main(int argc, char** argv)
     }
     if(not_triangles > 0) {
       std::cerr << "error: " << not_triangles_text << ", and the file's "
-                << "polygons make no valid polygon mesh (faces oriented inconsistently, an edge shared by three "
-                   "faces, a polygon that repeats a vertex), so this program cannot triangulate them; the "
-                   "library samples triangles only\n";
+                << "polygons make no valid polygon mesh, even oriented (a polygon that repeats a vertex?), so "
+                   "this program cannot triangulate them; the library samples triangles only\n";
       return 1;
     }
     return sample_and_report<PDS::Triangle_sample<K, std::size_t>>(

@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,7 @@ int main(int argc, char** argv)
     for(int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       if(examples::is_help(a)) {
-        std::cout << usage_line;
+        std::cout << usage_line << examples::exit_statuses;
         return 0;
       }
       if(size.read(argc, argv, i, seen)) continue;
@@ -59,9 +60,9 @@ int main(int argc, char** argv)
       } else if(a == "--sphere-radius") {
         seen.once(a);
         sphere_radius = examples::read_number(argc, argv, i);
-      } else if(a == "-o" && i + 1 < argc) {
+      } else if(a == "-o") {
         seen.once(a);
-        out_file = argv[++i];
+        out_file = examples::read_file_name(argc, argv, i);
       } else throw examples::Usage_error("unknown argument or missing value: " + a);
     }
     size.check();
@@ -95,16 +96,17 @@ int main(int argc, char** argv)
                            (p.z() - cz) / sphere_radius};
       out.write(reinterpret_cast<const char*>(v), sizeof v);
     }
-    if(!out) throw std::runtime_error("cannot write " + out_file);
+    examples::close_output(out, out_file);
 
-    std::cout << "points: " << points.size() << "\n"
-              << "minimum_distance: " << stats.minimum_distance << "\n"
-              << "seconds: " << seconds << "\n"
-              << "points_per_second: " << double(points.size()) / seconds << "\n"
-              << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
-              << "is_maximal: " << examples::maximality_text(maximal) << "\n"
-              << "output: " << out_file << "\n";
-    return pds && bool(maximal) ? 0 : 1;
+    std::ostringstream text;
+    text << "points: " << points.size() << "\n"
+         << "minimum_distance: " << stats.minimum_distance << "\n"
+         << "seconds: " << seconds << "\n"
+         << "points_per_second: " << double(points.size()) / seconds << "\n"
+         << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
+         << "is_maximal: " << examples::maximality_text(maximal) << "\n"
+         << "output: " << out_file << "\n";
+    return examples::report(text.str(), pds && bool(maximal));
   } catch(const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;
