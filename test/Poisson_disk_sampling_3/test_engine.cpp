@@ -564,6 +564,32 @@ struct Refuses_every_dart : Square_traits
   template <class Rng> std::optional<Sample> random_sample(const Fragment&, Rng&) const { return std::nullopt; }
 };
 
+// - points at 10^18 with a position_error() of 10^-15, far below their rounding: the neighbour
+//   buckets widen their reach by 10^-15 of the coordinates, and each sample went into thousands of
+//   them (3.8 GB for 228 samples, on a square 2,000 wide at D = 1).
+struct Far_square : Square_traits
+{
+  static constexpr double offset = 1e18;
+  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const
+  {
+    std::optional<Sample> s = Square_traits::random_sample(f, rng);
+    if(s) s->point[0] += offset;
+    return s;
+  }
+  Point reference_point(const Fragment& f) const
+  {
+    Point p = Square_traits::reference_point(f);
+    p[0] += offset;
+    return p;
+  }
+  bool is_covered(const Fragment& f, const Point& c, double radius) const
+  {
+    Point q = c;
+    q[0] -= offset;
+    return Square_traits::is_covered(f, q, radius);
+  }
+};
+
 TEST(Engine, ModelsThatBreakTheConceptAreRefused)
 {
   auto what = [](auto&& traits, auto exception) -> std::string {
@@ -624,6 +650,8 @@ TEST(Engine, ModelsThatBreakTheConceptAreRefused)
   const std::string sampled = what(Negative_position_error(), PDS::Invalid_input(""));
   for(const std::string& message : {certified, sampled})
     EXPECT_NE(message.find("position_error() must be a finite number, not negative"), std::string::npos) << message;
+  EXPECT_NE(what(Far_square(), PDS::Invalid_input("")).find("more than 10^15 times the minimum distance"),
+            std::string::npos);
   // by default after 2^30 draws (13 to 22 s); here after 100,000
   const Refuses_every_dart refuses;
   PDS::internal::Dart_throwing_engine<Refuses_every_dart> engine(refuses, 0.1, 0, 1000);
@@ -1445,6 +1473,34 @@ TEST(CellHashTable, FindsWhatWasInsertedNearAndFar)
 }
 
 // Every sample within reach of a point is in that point's bucket, whatever the cell size.
+// Cells that a hash linear in the cell sends to one slot: the combinations of three short vectors
+// whose sums of products with the old hash's constants are 0 modulo 2^64 (found by lattice
+// reduction). 4,096 of them made one probe chain, 2,048 slots read a lookup on average; here about
+// as many as for cells at random.
+TEST(CellHashTable, CellsOnALatticeDoNotShareAProbeChain)
+{
+  using PDS::internal::Cell_hash_table;
+  const std::int64_t v[3][3] = {
+      {-852863, -1285698, -183727}, {-2155039, 2521007, -1723558}, {372242, -551297, -3425731}};
+  Cell_hash_table table(4096);
+  std::vector<std::array<std::int64_t, 3>> cells;
+  for(int i = 0; i < 16; ++i)
+    for(int j = 0; j < 16; ++j)
+      for(int k = 0; k < 16; ++k) {
+        std::array<std::int64_t, 3> c;
+        for(int a = 0; a < 3; ++a) c[a] = i * v[0][a] + j * v[1][a] + k * v[2][a];
+        cells.push_back(c);
+        table.find_or_insert(c[0], c[1], c[2], std::uint32_t(cells.size() - 1));
+      }
+  std::size_t probes = 0;
+  for(std::size_t n = 0; n < cells.size(); ++n) {
+    const auto& c = cells[n];
+    ASSERT_EQ(table.find(c[0], c[1], c[2]), n);
+    probes += table.probes(c[0], c[1], c[2]);
+  }
+  EXPECT_LT(double(probes) / double(cells.size()), 4.);
+}
+
 TEST(NeighborBuckets, BucketHoldsEveryNeighbor)
 {
   Random rng(5);

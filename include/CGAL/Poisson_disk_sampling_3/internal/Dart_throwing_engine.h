@@ -181,6 +181,8 @@ public:
       throw Invalid_input("the minimum distance must be positive and finite");
     check_distance_range(d_);
     check_distance_precision(d_, traits_.position_error());
+    // where widened_reach(D, c) reaches 2 D: at most 27 buckets a sample
+    coordinate_limit_ = 1e15 * (1 - 1e-9) * d_;
   }
 
   /// Whether `run()` first refuses a surface whose area / (pi r^2) exceeds the point bound (by
@@ -271,8 +273,13 @@ public:
     const std::size_t half = (std::numeric_limits<std::size_t>::max)() / 2;
     const std::size_t expected = estimate < double(half) ? std::size_t(estimate) + 1 : half;
     // cells of side 4D: a sample is copied into 3.4 buckets on average, a query scans about 30
-    // samples; 2D copies each sample 8 times, 6D to 8D scan twice as many for no measured gain
-    Neighbor_buckets buckets(d_, 4, expected < max_points_ ? expected : max_points_);
+    // samples; 2D copies each sample 8 times, 6D to 8D scan twice as many for no measured gain. The
+    // hash table is sized for the points expected, at most the bound, the run's stop and 2^23 (32 MB
+    // of slots), and grows from there: the estimate follows the area, which surfaces that overlap
+    // themselves count many times over (2,000 copies of a triangle, 9 10^7 points expected for
+    // 25,000 made, were given 360 MB of slots for 84,000 cells).
+    const std::size_t table_points = (std::min)({expected, max_points_, sample_stop_, std::size_t(1) << 23});
+    Neighbor_buckets buckets(d_, 4, table_points);
     Random rng(seed_);
     Engine_statistics stats;
     std::uint64_t refused_in_a_row = 0; // draws since the last dart thrown
@@ -349,6 +356,9 @@ public:
           d.sample = traits_.random_sample(d.item.fragment, stream);
           if(!d.sample) continue;
           d.point = traits_.point(*d.sample);
+          if(!(std::abs(d.point[0]) <= coordinate_limit_ && std::abs(d.point[1]) <= coordinate_limit_ &&
+               std::abs(d.point[2]) <= coordinate_limit_))
+            refuse_far_sample(d.point);
           d.cell = buckets.cell(d.point);
           buckets.prefetch_slot(d.cell);
           d.thrown = true;
@@ -707,6 +717,20 @@ private:
                         "double for the same fragment on every call");
   }
 
+  // A sample so far from the origin that doubles there are coarser than about a thousandth of D: the
+  // neighbour buckets widen their reach by 10^-15 of the coordinates, beyond D here, and each sample
+  // went into thousands of buckets (a square at 10^18 whose position_error() said 10^-15, at D = 1:
+  // 3.8 GB for 228 samples). A model whose position_error() bounds its points' rounding (at least
+  // 2^-53 of their coordinates) never gets here: the distance is refused first, below 2^20 of it.
+  [[noreturn]] void refuse_far_sample(const Point_d& p) const
+  {
+    throw Invalid_input("the surface model gave a sample at (" + number_text(p[0]) + ", " + number_text(p[1]) +
+                        ", " + number_text(p[2]) + "), more than 10^15 times the minimum distance (" +
+                        number_text(d_) + ") from the origin, where doubles are too coarse for it: its "
+                        "position_error() (" + number_text(traits_.position_error()) +
+                        ") must bound the rounding of its points");
+  }
+
   // checked_area(), and at most the largest root's area (up to rounding): see run()
   double checked_child_area(const Fragment& f) const
   {
@@ -744,6 +768,7 @@ private:
   int max_depth_;
   bool check_expected_count_ = true;
   double max_child_area_ = 0; // set by run()
+  double coordinate_limit_;    // of a sample's coordinates, see refuse_far_sample()
   std::uint64_t refusal_limit_ = std::uint64_t(1) << 30;
   std::size_t sample_stop_ = std::size_t(-1);
   bool first_sample_only_ = false;
