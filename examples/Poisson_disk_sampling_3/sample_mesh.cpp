@@ -55,9 +55,11 @@ int usage(const char* message)
 }
 
 // CGAL 5.5's PLY reader dereferences a null pointer where a vertex coordinate is not a float or a
-// double (an int, a list) and where a property comes before any element, and reads a coordinate that
-// is missing as 0 (another surface, unsaid): the header of a PLY file is checked first. Returns what
-// is wrong with it, or nothing (also for a file that is no PLY, which CGAL's readers judge).
+// double (an int, a list), where a half-edge's source or target is not an unsigned int, and where a
+// property comes before any element, and reads a coordinate that is missing as 0 (another surface,
+// unsaid): the header of a PLY file is checked first, as that reader reads it (its elements "vertex"
+// or "vertices", and "halfedge"). Returns what is wrong with it, or nothing (also for a file that is
+// no PLY, which CGAL's readers judge).
 std::string ply_header_problem(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -67,16 +69,15 @@ std::string ply_header_problem(const std::string& path)
   auto next_line = [&] {
     line.clear();
     for(char c; budget > 0 && in.get(c); --budget) {
-      if(c == '\n') {
-        if(!line.empty() && line.back() == '\r') line.pop_back();
-        return true;
-      }
-      line.push_back(c);
+      if(c == '\n') break;
+      if(c != '\r') line.push_back(c);
     }
-    return false;
+    return !line.empty() || (budget > 0 && in);
   };
-  if(!next_line() || line != "ply") return std::string();
-  bool any_element = false, in_vertices = false, has_vertices = false;
+  std::string first_word;
+  if(!next_line() || !(std::istringstream(line) >> first_word) || first_word != "ply") return std::string();
+  std::string element;
+  bool any_element = false, has_vertices = false;
   std::set<std::string> coordinates;
   while(next_line()) {
     std::istringstream words(line);
@@ -89,21 +90,23 @@ std::string ply_header_problem(const std::string& path)
       return std::string();
     }
     if(keyword == "element") {
-      words >> name;
+      words >> element;
       any_element = true;
-      in_vertices = name == "vertex";
-      has_vertices = has_vertices || in_vertices;
+      has_vertices = has_vertices || element == "vertex" || element == "vertices";
     } else if(keyword == "property") {
       if(!any_element) return "a property comes before any element";
       words >> type;
       if(type == "list") words >> name >> name; // the types of the count and of the items
       words >> name;
-      if(in_vertices && (name == "x" || name == "y" || name == "z")) {
+      const std::string kind = type == "list" ? "a list" : "of type " + type;
+      if((element == "vertex" || element == "vertices") && (name == "x" || name == "y" || name == "z")) {
         if(type != "float" && type != "double" && type != "float32" && type != "float64")
-          return "its vertices' " + name + " coordinate is " + (type == "list" ? "a list" : "of type " + type) +
-                 "; this program reads coordinates of type float or double";
+          return "its vertices' " + name + " coordinate is " + kind + "; this program reads coordinates of type "
+                 "float or double";
         coordinates.insert(name);
       }
+      if(element == "halfedge" && (name == "source" || name == "target") && type != "uint" && type != "uint32")
+        return "its half-edges' " + name + " is " + kind + "; CGAL reads it as an unsigned int (uint) only";
     }
   }
   return "its header has no end_header line within its first megabyte";
@@ -276,8 +279,9 @@ int main(int argc, char** argv)
     }
     if(not_triangles > 0) {
       std::cerr << "error: " << not_triangles_text << ", and the file's "
-                << "polygons make no valid polygon mesh, even oriented (a polygon that repeats a vertex?), so "
-                   "this program cannot triangulate them; the library samples triangles only\n";
+                << "polygons make no valid polygon mesh (" << (repeats_a_vertex(soup_polygons) ? "a polygon "
+                   "repeats a vertex" : "not even once oriented") << "), so this program cannot triangulate "
+                   "them; the library samples triangles only\n";
       return 1;
     }
     return sample_and_report<PDS::Triangle_sample<K, std::size_t>>(

@@ -1472,7 +1472,6 @@ TEST(CellHashTable, FindsWhatWasInsertedNearAndFar)
   }
 }
 
-// Every sample within reach of a point is in that point's bucket, whatever the cell size.
 // Cells that a hash linear in the cell sends to one slot: the combinations of three short vectors
 // whose sums of products with the old hash's constants are 0 modulo 2^64 (found by lattice
 // reduction). 4,096 of them made one probe chain, 2,048 slots read a lookup on average; here about
@@ -1501,6 +1500,7 @@ TEST(CellHashTable, CellsOnALatticeDoNotShareAProbeChain)
   EXPECT_LT(double(probes) / double(cells.size()), 4.);
 }
 
+// Every sample within reach of a point is in that point's bucket, whatever the cell size.
 TEST(NeighborBuckets, BucketHoldsEveryNeighbor)
 {
   Random rng(5);

@@ -358,7 +358,7 @@ public:
           d.point = traits_.point(*d.sample);
           if(!(std::abs(d.point[0]) <= coordinate_limit_ && std::abs(d.point[1]) <= coordinate_limit_ &&
                std::abs(d.point[2]) <= coordinate_limit_))
-            refuse_far_sample(d.point);
+            refuse_sample_at(d.point);
           d.cell = buckets.cell(d.point);
           buckets.prefetch_slot(d.cell);
           d.thrown = true;
@@ -560,14 +560,16 @@ private:
 
   static constexpr std::size_t none = std::size_t(-1);
 
-  // What a body of for_each_dart() works with: the scan's scratch, and where the body is in the order
-  // of a sequential run (its stage, and its first dart or the dart it is at), for the exception
-  // that such a run would meet first
+  // What a body of for_each_dart() works with: the scan's scratch (its thread's), and where the body
+  // is in the order of a sequential run (its stage, and its first dart or the dart it is at), for
+  // the exception that such a run would meet first. Made for each range, on the stack: a thread that
+  // waits in a model's own TBB loop may run another range of the engine's meanwhile, which must not
+  // overwrite where this one is.
   struct Scratch
   {
-    std::vector<std::uint32_t> hits;
-    int stage = 0;
-    std::size_t dart = 0;
+    std::vector<std::uint32_t>& hits;
+    int stage;
+    std::size_t dart;
   };
 
   // The exception of a parallel loop that comes first in the order of a sequential run, if any
@@ -605,9 +607,7 @@ private:
       tbb::parallel_for(
           tbb::blocked_range<std::size_t>(0, n, grain),
           [&](const tbb::blocked_range<std::size_t>& r) {
-            Scratch& scratch = scratch_.local();
-            scratch.stage = 0;
-            scratch.dart = r.begin();
+            Scratch scratch{scratch_.local(), 0, r.begin()};
             try {
               body(r.begin(), r.end(), scratch, false);
             } catch(...) {
@@ -621,7 +621,8 @@ private:
       return first;
     }
 #endif
-    body(0, n, scratch_0_, true);
+    Scratch scratch{hits_, 0, 0};
+    body(0, n, scratch, true);
     return First_error();
   }
   static constexpr std::size_t grain = 32;
@@ -717,13 +718,17 @@ private:
                         "double for the same fragment on every call");
   }
 
-  // A sample so far from the origin that doubles there are coarser than about a thousandth of D: the
-  // neighbour buckets widen their reach by 10^-15 of the coordinates, beyond D here, and each sample
-  // went into thousands of buckets (a square at 10^18 whose position_error() said 10^-15, at D = 1:
-  // 3.8 GB for 228 samples). A model whose position_error() bounds its points' rounding (at least
-  // 2^-53 of their coordinates) never gets here: the distance is refused first, below 2^20 of it.
-  [[noreturn]] void refuse_far_sample(const Point_d& p) const
+  // A sample that is not finite, or so far from the origin that doubles there are coarser than about a
+  // thousandth of D: the neighbour buckets widen their reach by 10^-15 of the coordinates, beyond D
+  // here, and each sample went into thousands of buckets (a square at 10^18 whose position_error()
+  // said 10^-15, at D = 1: 3.8 GB for 228 samples). A model whose position_error() bounds its points'
+  // rounding (at least 2^-53 of their coordinates) never gets here: the distance is refused first,
+  // below 2^20 of it.
+  [[noreturn]] void refuse_sample_at(const Point_d& p) const
   {
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw Invalid_input("the surface model gave a sample at (" + number_text(p[0]) + ", " + number_text(p[1]) +
+                          ", " + number_text(p[2]) + "): its coordinates must be finite numbers");
     throw Invalid_input("the surface model gave a sample at (" + number_text(p[0]) + ", " + number_text(p[1]) +
                         ", " + number_text(p[2]) + "), more than 10^15 times the minimum distance (" +
                         number_text(d_) + ") from the origin, where doubles are too coarse for it: its "
@@ -756,9 +761,9 @@ private:
   }
 
   const Traits& traits_;
-  Scratch scratch_0_; // of the body of for_each_dart() on this thread
+  std::vector<std::uint32_t> hits_; // scratch of gather_near() on this thread
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<Scratch> scratch_;
+  tbb::enumerable_thread_specific<std::vector<std::uint32_t>> scratch_; // on TBB's threads
   std::mutex error_mutex_;
 #endif
   bool parallel_ = false;
@@ -768,7 +773,7 @@ private:
   int max_depth_;
   bool check_expected_count_ = true;
   double max_child_area_ = 0; // set by run()
-  double coordinate_limit_;    // of a sample's coordinates, see refuse_far_sample()
+  double coordinate_limit_;    // of a sample's coordinates, see refuse_sample_at()
   std::uint64_t refusal_limit_ = std::uint64_t(1) << 30;
   std::size_t sample_stop_ = std::size_t(-1);
   bool first_sample_only_ = false;

@@ -108,9 +108,10 @@ public:
     }
     // buckets are made in the order of the copies, as one insert() after the other makes them
     for(Copy& c : copies_) {
-      // (a bucket's number is 32 bits, and 2^32 - 1 means none: more than 10^9 points, as many copies)
+      // (a bucket's number is 32 bits, and 2^32 - 1 means none: at most 27 cells a sample, so more
+      // than 1.5 10^8 samples, far above the default bound)
       if(buckets_.size() >= std::size_t(Cell_hash_table::none))
-        throw Point_limit_exceeded("more than 2^32 - 2 cells of samples (more than 10^9 samples)");
+        throw Point_limit_exceeded("more than 2^32 - 2 cells hold samples (more than 1.5 10^8 samples)");
       c.bucket = cells_.find_or_insert(c.cell.x, c.cell.y, c.cell.z, std::uint32_t(buckets_.size()));
       if(c.bucket == buckets_.size()) buckets_.emplace_back();
       prefetch_header(&buckets_[c.bucket]);
