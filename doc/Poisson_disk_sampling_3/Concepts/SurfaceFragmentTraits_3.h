@@ -50,8 +50,9 @@
 /// that is not a number, or negative (the certificate checks these too, on its roots), or above the
 /// largest initial fragment's beyond rounding, or a fragment's area outside the power-of-two range it
 /// had when the fragment was stored, or that refuses every dart for more than 2^30 draws in a row, or
-/// whose sample lies more than 10^15 times the distance from the origin (where doubles are too
-/// coarse for it: its position error understates the rounding of its points), gets `Invalid_input`. A model whose fragments in wait outnumber 64 times its samples so far, its expected points (area / (pi r^2))
+/// whose sample lies more than 10^15 times the distance from the origin (where doubles are too coarse
+/// for it: its position error understates the rounding of its points), gets `Invalid_input`. A model
+/// whose fragments in wait outnumber 64 times its samples so far, its expected points (area / (pi r^2))
 /// and its initial fragments, plus about a million, gets `Point_limit_exceeded`: coverage tests that
 /// never succeed, or succeed only with a fixed margin, or samples far off the surface leave places that
 /// are never covered, and the fragments there multiply. (The triangle model keeps fewer than twice the

@@ -33,10 +33,10 @@ namespace Poisson_disk_sampling_3 {
 ///
 /// Splitting: a rectangle is halved across its longer side on the sphere, into two children of equal
 /// area. (The paper does not say how a rectangle is split; four children, both ranges halved, as for
-/// triangles, make cells near the poles thin slivers,
-/// (pi / 2) rho^2 as wide as they are long at distance rho from the axis, since a range of heights is
-/// long and a range of longitudes short there: on the unit sphere at about a million points, a
-/// fifth of the darts went to the thousandth of the area within 2.6 degrees of the poles.)
+/// triangles, make cells near the poles thin slivers, (pi / 2) rho^2 as wide as they are long at
+/// distance rho from the axis, since a range of heights is long and a range of longitudes short there:
+/// on the unit sphere at about a million points, a fifth of the darts went to the thousandth of the
+/// area within 2.6 degrees of the poles.)
 ///
 /// The rectangles are cells of dyadic grids over the eight octants: a fragment stores its two
 /// indices and the two numbers of halvings of its ranges (16 bytes; four bounds and a depth would take
@@ -45,10 +45,10 @@ namespace Poisson_disk_sampling_3 {
 /// exactly.
 ///
 /// Coverage: the paper tests the four corners of a rectangle against the ball, which fails near the
-/// poles (the paper says so, and gives no test for them), where the edges of constant phi are not great circles and bulge out of the ball between two
-/// inside corners. `is_covered()` instead finds the minimum over the whole rectangle of the distance
-/// criterion in closed form (corners, the extreme point of each edge, the antipode), so it is right
-/// everywhere.
+/// poles (the paper says so, and gives no test for them), where the edges of constant phi are not great
+/// circles and bulge out of the ball between two inside corners. `is_covered()` instead finds the
+/// minimum over the whole rectangle of the distance criterion in closed form (corners, the extreme
+/// point of each edge, the antipode), so it is right everywhere.
 class Sphere_fragment_traits_3
 {
 public:

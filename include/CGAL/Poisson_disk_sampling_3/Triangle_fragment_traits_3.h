@@ -72,20 +72,21 @@ namespace Poisson_disk_sampling_3 {
 /// `benchmark/README.md`, change 43).
 ///
 /// Chord cuts (the paper's Section 7 clips along an approximate dart boundary, cutting off free
-/// surface; these cuts cut off only what a ball provably holds, see design.md, "Chord cuts"): when a dart finds a fragment at most 4 D across partly covered, and
-/// a ball of `near` holds one or two of its corners, `refine()` cuts off the part of the fragment
-/// that the ball holds, up to the chord between two points of its edges: a triangle at one corner,
-/// or a quadrilateral along an edge. The chord's ends are multiples of 1/64 of their edges (of a
-/// coarser fraction where the fragment's lattice is already much finer than its size, see `level()`),
-/// moved towards the ball's corners until their computed points are in the ball with the margin of
-/// `is_covered()`; the part cut off, the convex hull of points in the ball, is covered. When the
-/// ball that takes the most takes at least a quarter of the fragment, what is left (a triangle, or a
-/// quadrilateral as two triangles) replaces the fragment's four children, after the same single-ball
-/// and union tests. Its corners are exact points of a lattice up to 2^-6 finer than the fragment's
-/// (made as coarse as they allow), and it is refined like any fragment, by midpoint subdivision or by
-/// another cut. The darts then follow the free part of a fragment instead of the quarters of a
-/// subdivision: on lion.off at about one million points, 6.2 darts per sample instead of 8.0, and 1.87 fragments
-/// active per sample at the peak instead of 2.34 (see `benchmark/README.md`, change 38).
+/// surface; these cuts cut off only what a ball provably holds, see design.md, "Chord cuts"): when a
+/// dart finds a fragment at most 4 D across partly covered, and a ball of `near` holds one or two of
+/// its corners, `refine()` cuts off the part of the fragment that the ball holds, up to the chord
+/// between two points of its edges: a triangle at one corner, or a quadrilateral along an edge. The
+/// chord's ends are multiples of 1/64 of their edges (of a coarser fraction where the fragment's
+/// lattice is already much finer than its size, see `level()`), moved towards the ball's corners until
+/// their computed points are in the ball with the margin of `is_covered()`; the part cut off, the
+/// convex hull of points in the ball, is covered. When the ball that takes the most takes at least a
+/// quarter of the fragment, what is left (a triangle, or a quadrilateral as two triangles) replaces the
+/// fragment's four children, after the same single-ball and union tests. Its corners are exact points
+/// of a lattice up to 2^-6 finer than the fragment's (made as coarse as they allow), and it is refined
+/// like any fragment, by midpoint subdivision or by another cut. The darts then follow the free part of
+/// a fragment instead of the quarters of a subdivision: on lion.off at about one million points, 6.2
+/// darts per sample instead of 8.0, and 1.87 fragments active per sample at the peak instead of 2.34
+/// (see `benchmark/README.md`, change 38).
 ///
 /// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
 /// `sample_surface()` to sample triangles from another source.
