@@ -87,12 +87,12 @@ inline void close_output(std::ofstream& out, const std::string& name)
   if(!out) throw std::runtime_error("cannot write " + name);
 }
 
-/// Prints `report` on the standard output and returns the exit status: 0 if the samples are valid
+/// Prints `text` on the standard output and returns the exit status: 0 if the samples are valid
 /// (a Poisson-disk set, certified maximal), else 1, with a line on the standard error, as when the
 /// report cannot be written.
-inline int report(const std::string& report, bool valid)
+inline int report(const std::string& text, bool valid)
 {
-  std::cout << report << std::flush;
+  std::cout << text << std::flush;
   if(!std::cout) {
     std::cerr << "error: cannot write the report to the standard output\n";
     return 1;

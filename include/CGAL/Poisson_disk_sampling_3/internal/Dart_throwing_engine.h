@@ -726,11 +726,11 @@ private:
   // below 2^20 of it.
   [[noreturn]] void refuse_sample_at(const Point_d& p) const
   {
+    const std::string sample = "the surface model gave a sample at (" + number_text(p[0]) + ", " +
+                               number_text(p[1]) + ", " + number_text(p[2]) + ")";
     if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      throw Invalid_input("the surface model gave a sample at (" + number_text(p[0]) + ", " + number_text(p[1]) +
-                          ", " + number_text(p[2]) + "): its coordinates must be finite numbers");
-    throw Invalid_input("the surface model gave a sample at (" + number_text(p[0]) + ", " + number_text(p[1]) +
-                        ", " + number_text(p[2]) + "), more than 10^15 times the minimum distance (" +
+      throw Invalid_input(sample + ": its coordinates must be finite numbers");
+    throw Invalid_input(sample + ", more than 10^15 times the minimum distance (" +
                         number_text(d_) + ") from the origin, where doubles are too coarse for it: its "
                         "position_error() (" + number_text(traits_.position_error()) +
                         ") must bound the rounding of its points");
