@@ -723,8 +723,57 @@ TEST(Certificate, PiecesWaitingAreBounded)
   EXPECT_FALSE(c.has_witness);
   EXPECT_NEAR(c.uncovered_area, 1, 1e-12) << "every piece counts as not proven covered";
   EXPECT_EQ(Covers_nothing::live, 0);
-  // the pieces waiting, those of the next round, and for a moment the old copies of a growing vector
-  EXPECT_LE(Covers_nothing::peak, long(budget));
+  // the pieces waiting, in one queue, and those of the first phase's stack and a piece's children, a
+  // few dozen (the pieces of the round being refined and of the next were once two lists of that size
+  // each, which grew by doubling: 335 MB at most)
+  EXPECT_LE(Covers_nothing::peak, long(budget / 4 + 64));
+}
+
+// The square, counting the coverage tests the certificate asks of it.
+struct Counting_square : Square_traits
+{
+  static inline std::size_t tests = 0;
+  bool is_covered(const Fragment& f, const Point& c, double radius) const
+  {
+    ++tests;
+    return Square_traits::is_covered(f, c, radius);
+  }
+};
+
+// is_maximal() tests each sample where it reaches: copies of a sample add no test (10,000 copies of one
+// point on 20 copies of a face took 22 s, a test of each copy for each piece near it), and a cluster of
+// samples counts in the work it is allowed (the cluster's samples are each tested on every piece near
+// them, and the pieces along the boundary of its balls are many).
+TEST(Certificate, CopiesAndClustersOfSamplesAreBounded)
+{
+  const double d = 0.6; // one sample at the middle of the square leaves its corners uncovered
+  const std::vector<std::array<double, 3>> one{{{0.5, 0.5, 0}}};
+  Counting_square::tests = 0;
+  const auto alone = PDS::is_maximal_on_surface(Counting_square(), one, d);
+  const std::size_t tests_alone = Counting_square::tests;
+  ASSERT_TRUE(alone.uncovered_point);
+  const std::vector<std::array<double, 3>> copies(1000, one.front());
+  Counting_square::tests = 0;
+  const auto with_copies = PDS::is_maximal_on_surface(Counting_square(), copies, d);
+  EXPECT_EQ(Counting_square::tests, tests_alone);
+  EXPECT_EQ(with_copies.uncovered_point, alone.uncovered_point);
+  EXPECT_EQ(with_copies.uncovered_area, alone.uncovered_area);
+
+  // 1,000 samples within 10^-6 of each other: after the gap is proven, the area estimate stops
+  // refining once it has done a quarter of the budget's work, each test a sixteenth of a decision
+  std::vector<double> xyz;
+  for(int i = 0; i < 1000; ++i) xyz.insert(xyz.end(), {0.5 + 1e-9 * i, 0.5, 0});
+  const PDS::internal::Point_hash_grid grid(2 * d, xyz.data(), 1000);
+  const std::size_t budget = 40000;
+  Counting_square::tests = 0;
+  const PDS::internal::Certificate c = PDS::internal::certify_coverage(Counting_square(), grid, d, 48, budget);
+  EXPECT_TRUE(c.has_witness);
+  // the four corners outside the disk of radius d: 1 - (pi d^2 - 4 segments beyond the sides), 0.04911
+  const double h = 0.5, segment = d * d * std::acos(h / d) - h * std::sqrt(d * d - h * h);
+  EXPECT_GE(c.uncovered_area, 1 - (3.14159265358979 * d * d - 4 * segment)) << "an upper bound";
+  // a quarter of the budget after the gap (found on the fourth piece), 16 tests a decision, and the
+  // 85 pieces above the leaf size, d^2 / 64, which are split whatever the work (900,000 tests before)
+  EXPECT_LE(Counting_square::tests, 16 * (budget / 4 + 4) + 1000 * 85);
 }
 
 // Darts land uniformly on the free area: the first sample of each run is uniform on the square, so its

@@ -9,6 +9,7 @@
 #include <CGAL/Poisson_disk_sampling_3/sample_sphere.h>
 #include <CGAL/Poisson_disk_sampling_3/sample_triangle_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <iterator>
 #include <optional>
@@ -43,13 +44,28 @@ struct Maximality_check
 
 namespace internal {
 
+/// the points of `xyz` (three coordinates each) with each copy of a point but one left out, in
+/// lexicographic order: each sample is tested wherever it reaches, and copies would only repeat the
+/// tests (10,000 copies of one point on 20 copies of a face took 22 s to certify). O(n log n).
+inline std::vector<double> distinct_coordinates(const std::vector<double>& xyz)
+{
+  std::vector<std::array<double, 3>> points(xyz.size() / 3);
+  for(std::size_t i = 0; i < points.size(); ++i) points[i] = {{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}};
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::vector<double> distinct;
+  distinct.reserve(3 * points.size());
+  for(const auto& p : points) distinct.insert(distinct.end(), p.begin(), p.end());
+  return distinct;
+}
+
 template <class Point_3, class Traits, class PointRange>
 Maximality_check<Point_3> check_maximal(const Traits& traits, const PointRange& samples, double d)
 {
   check_distance(d);
   check_distance_range(d);
   check_distance_precision(d, traits.position_error());
-  const std::vector<double> xyz = coordinates_of(samples);
+  const std::vector<double> xyz = distinct_coordinates(coordinates_of(samples));
   const Point_hash_grid grid = grid_of(xyz, d);
   const Certificate c = certify_coverage(traits, grid, d);
   Maximality_check<Point_3> result;
@@ -92,9 +108,10 @@ constexpr bool has_no_sampling_parameter()
 /// points (`Triangle_fragment_traits_3::position_error()`, decided exactly) is a proven gap, so that
 /// the exact point is farther than d; the computed one is reported as `uncovered_point`. The work and
 /// the memory are bounded (10 million pieces in the last phase, 10 million and 256 per sample and per
-/// face in the first, 2.5 million waiting at a time, and pieces that fill a region within rounding of d
-/// from the samples are not refined further): on slivers far thinner than d, which midpoint subdivision
-/// must cut across as often as along, and on sets maximal with no margin (a point of the surface at
+/// face in the first, a sample tested on a piece counting a sixteenth of one, 2.5 million waiting at a
+/// time, and pieces that fill a region within rounding of d from the samples are not refined further;
+/// copies of a sample are tested once): on slivers far thinner than d, which midpoint subdivision must
+/// cut across as often as along, and on sets maximal with no margin (a point of the surface at
 /// distance d from the samples), the answer may be `false` with no `uncovered_point`, undecided.
 /// Coordinates are read as the nearest doubles. The samples are not required to lie on the surface (any
 /// points may be certified), and faces of zero area (corners on one line) are skipped, as the sampler

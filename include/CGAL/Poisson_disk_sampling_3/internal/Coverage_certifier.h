@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <iterator>
 #include <limits>
 #include <vector>
@@ -33,17 +34,19 @@ struct Certificate
 /// it fails. Each root fragment is split with the model's own `split` until one sample's ball covers
 /// each piece (the model's conservative `is_covered`).
 ///
-/// The work and the memory are bounded. A piece whose reference point is farther than D from every
-/// sample, by more than the point's rounding (decided exactly), is a proven gap: it is refined only
-/// down to `leaf_area` for the area estimate; once a gap is proven and a quarter of `budget` more
-/// pieces decided, so is every piece not proven covered. Pieces still undecided below D^2 / 2^24 are
-/// deferred: in a maximal set they are the few that sit where two ball boundaries cross close to a
-/// piece's edge, and they are refined breadth-first down to `max_depth`, until a gap is proven or a
-/// budget is spent. Around a real gap, many pieces straddle its boundary; refining all of them
-/// depth-first would take time exponential in the depth. At most `budget / 4` pieces wait at a time;
-/// beyond that a piece counts as not proven covered, as do the pieces left when the budget is spent,
-/// and those that the first phase would split after `budget` decisions and 256 per sample and per
-/// root: the answer is then `false` with no witness, undecided.
+/// The work and the memory are bounded. The work is counted in decisions, a decision being one piece
+/// decided plus a sixteenth for each sample within reach of it that it tests (so that a cluster of
+/// many samples, which each decision near it scans, counts for what it costs). A piece whose reference
+/// point is farther than D from every sample, by more than the point's rounding (decided exactly), is
+/// a proven gap: it is refined only down to `leaf_area` for the area estimate; once a gap is proven
+/// and a quarter of `budget` more decisions spent, so is every piece not proven covered. Pieces still
+/// undecided below D^2 / 2^24 are deferred: in a maximal set they are the few that sit where two ball
+/// boundaries cross close to a piece's edge, and they are refined breadth-first down to `max_depth`,
+/// until a gap is proven or a budget is spent. Around a real gap, many pieces straddle its boundary;
+/// refining all of them depth-first would take time exponential in the depth. At most `budget / 4`
+/// pieces wait at a time, in one queue; beyond that a piece counts as not proven covered, as do the
+/// pieces left when the budget is spent, and those that the first phase would split after `budget`
+/// decisions and 256 per sample and per root: the answer is then `false` with no witness, undecided.
 template <class Traits>
 Certificate certify_coverage(const Traits& traits, const Point_hash_grid& samples, double d,
                              int max_depth = 48, std::size_t budget = 10000000)
@@ -81,7 +84,10 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
 
   enum Verdict { COVERED, GAP_LEAF, SPLIT };
   // decides one piece; records a proven gap
-  std::size_t decisions = 0, decisions_at_gap = 0; // all pieces decided; those when a gap was first proven
+  // the work (see above): pieces decided, and samples tested, 16 to a decision; the work when a gap was
+  // first proven
+  std::size_t decisions = 0, tests = 0, work_at_gap = 0;
+  const auto work = [&] { return decisions + tests / 16; };
   bool ref_at_d = false; // the last piece decided has its reference point at d from the samples
   auto decide = [&](const Item& item) {
     ++decisions;
@@ -97,13 +103,14 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       near.push_back(q);
       if(!ref_near && compare_distance_exact(ref.data(), q, d_gap) != CGAL::LARGER) ref_near = true;
     });
+    tests += near.size();
     for(const double* q : near)
       if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) return COVERED;
     if(ref_near) return SPLIT;
     result.maximal = false;
     if(!result.has_witness) {
       result.has_witness = true;
-      decisions_at_gap = decisions;
+      work_at_gap = work();
       result.witness = ref;
     }
     return traits.area(item.fragment) <= leaf_area ? GAP_LEAF : SPLIT;
@@ -115,15 +122,16 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     for(const Fragment& c : children) put(Item{c, level_or(traits, c, item.depth + 1)});
   };
 
-  std::vector<Item> stack, deferred;
+  std::vector<Item> stack;
+  std::deque<Item> waiting; // the deferred pieces, in the order they are refined
   auto not_proven = [&](const Item& item) {
     result.maximal = false;
     result.uncovered_area += traits.area(item.fragment);
   };
-  // a piece to refine later: in `list` while it holds fewer than budget / 4, else not proven covered
+  // a piece to refine later: in `waiting` while it holds fewer than budget / 4, else not proven covered
   const std::size_t max_waiting = budget / 4;
-  auto defer = [&](const Item& item, std::vector<Item>& list) {
-    if(list.size() < max_waiting) list.push_back(item);
+  auto defer = [&](const Item& item) {
+    if(waiting.size() < max_waiting) waiting.push_back(item);
     else not_proven(item);
   };
   // Regions that the pieces fill. For the pieces of area up to d^2 / 64, the count decided at each
@@ -159,7 +167,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   // proven covered, without being split. (Maximal sets took 3 to 44 per sample and root, counted on
   // CGAL's meshes at 1,000 to 100,000 points, and on a needle 2^14 d long, the most.)
   std::size_t roots = 0;
-  const auto over_budget = [&] { return decisions > budget + 256 * (samples.size() + roots); };
+  const auto over_budget = [&] { return work() > budget + 256 * (samples.size() + roots); };
   auto certify_root = [&](const Fragment& root) {
     ++roots;
     if(!(checked_area(traits, root) > 0)) return;
@@ -178,10 +186,10 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       // quarter of the budget of decisions spent on it, a piece of leaf size that no single ball holds
       // counts whole instead of being refined across the balls' boundaries down to the deferral size,
       // which costs time and memory in proportion to the boundaries' length over that size.
-      else if(result.has_witness && area <= leaf_area && decisions - decisions_at_gap > budget / 4)
+      else if(result.has_witness && area <= leaf_area && work() - work_at_gap > budget / 4)
         result.uncovered_area += area;
       else if(filling && area <= fill_area) not_proven(item);
-      else if(area <= defer_area || item.depth >= max_depth) defer(item, deferred);
+      else if(area <= defer_area || item.depth >= max_depth) defer(item);
       else if(over_budget()) not_proven(item);
       else {
         record(item, area, true);
@@ -191,31 +199,31 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   };
   root_fragments(traits, d, Calling_output(&certify_root));
 
-  // The deferred pieces, breadth-first, until a gap is proven, the budget is spent or the pieces are
-  // found to fill a region (above): what is left then counts as not proven covered.
-  std::size_t spent = 0;
-  std::vector<Item> next;
-  while(!deferred.empty() && !result.has_witness && spent < budget && !filling) {
-    next.clear();
-    std::size_t done = 0;
-    for(; done < deferred.size() && !filling; ++done) {
-      const Item& item = deferred[done];
-      ++spent;
+  // The deferred pieces, breadth-first (one depth after the other: a piece's children go behind the
+  // pieces waiting), until a gap is proven, the budget is spent or the pieces are found to fill a
+  // region (above): what is left then counts as not proven covered.
+  const std::size_t work_at_start = work();
+  while(!waiting.empty() && !result.has_witness && work() - work_at_start < budget && !filling) {
+    bool deeper = false; // a piece above the depth floor waits for the next round
+    for(std::size_t round = waiting.size(); round > 0 && !filling; --round) {
+      const Item item = waiting.front();
+      waiting.pop_front();
       const Verdict v = decide(item);
       if(v == COVERED) {
         record(item, traits.area(item.fragment), false);
       } else if(v == GAP_LEAF || item.depth >= max_depth || result.has_witness) {
-        defer(item, next);
+        defer(item);
       } else {
         record(item, traits.area(item.fragment), true);
-        split(item, [&](const Item& c) { defer(c, next); });
+        split(item, [&](const Item& c) {
+          deeper = deeper || (c.depth < max_depth && waiting.size() < max_waiting);
+          defer(c);
+        });
       }
     }
-    next.insert(next.end(), deferred.begin() + std::ptrdiff_t(done), deferred.end()); // left when filling
-    deferred.swap(next);
-    if(std::all_of(deferred.begin(), deferred.end(), [&](const Item& i) { return i.depth >= max_depth; })) break;
+    if(!deeper && !filling) break;
   }
-  for(const Item& item : deferred) not_proven(item);
+  for(const Item& item : waiting) not_proven(item);
   return result;
 }
 
