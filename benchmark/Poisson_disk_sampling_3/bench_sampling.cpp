@@ -182,6 +182,16 @@ double white_noise_seconds(const Mesh& m, std::size_t n)
   });
 }
 
+// A case's error: reported as the case's, and the program's exit status is 1 (see main()), so that a
+// script that runs the benchmark sees it.
+bool any_case_failed = false;
+
+void fail(benchmark::State& state, const std::string& message)
+{
+  any_case_failed = true;
+  state.SkipWithError(message.c_str());
+}
+
 // Checks the output, outside the timed region; reports how long each check took (what a user who
 // validates a result waits for, beside the sampling itself), unless `report_seconds` is false.
 template <class Surface>
@@ -190,13 +200,13 @@ bool validate(benchmark::State& state, const Surface& surface, const std::vector
 {
   auto start = std::chrono::steady_clock::now();
   if(!PDS::is_poisson_disk_set(points, d)) {
-    state.SkipWithError("output is not a Poisson-disk set");
+    fail(state, "output is not a Poisson-disk set");
     return false;
   }
   if(report_seconds) state.counters["check_seconds"] = seconds_since(start);
   start = std::chrono::steady_clock::now();
   if(!PDS::is_maximal(surface, points, d)) {
-    state.SkipWithError("output is not maximal");
+    fail(state, "output is not maximal");
     return false;
   }
   if(report_seconds) state.counters["certify_seconds"] = seconds_since(start);
@@ -299,6 +309,10 @@ void count_mode_case(benchmark::State& state, const std::string& name)
   PDS::sample_triangle_mesh(m, std::back_inserter(again),
                             PDS::parameters::minimum_distance(stats.minimum_distance).random_seed(stats.random_seed));
   const double radius_seconds = seconds_since(start);
+  if(again.size() != points.size()) {
+    fail(state, "the radius mode at the distance and seed the search settled on gave another number of points");
+    return;
+  }
   state.counters["points"] = double(points.size());
   state.counters["runs"] = double(stats.number_of_runs);
   state.counters["stopped_runs"] = double(stats.stopped_runs);
@@ -440,7 +454,7 @@ void sampling_only_case(benchmark::State& state, const std::string& name)
     std::vector<Point> points;
     PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
     if(points.size() != n) {
-      state.SkipWithError("a second run with the same seed gave another number of points");
+      fail(state, "a second run with the same seed gave another number of points");
       return;
     }
     if(!validate(state, m, points, d, false)) return;
@@ -514,7 +528,7 @@ void union_test_case(benchmark::State& state, const std::string& name)
   const With_union_test_only with_union(traits);
   const Without_union_test plain(traits);
   PDS::Sampling_statistics with, without, refined;
-  std::size_t n_with = 0, n_without = 0;
+  std::size_t n_with = 0, n_without = 0, n_refined = 0;
   const std::array<double, 3> best = fastest_alternating<3>(state, [&](std::size_t v) {
     if(v == 0) {
       n_with = 0;
@@ -526,7 +540,8 @@ void union_test_case(benchmark::State& state, const std::string& name)
                           PDS::parameters::minimum_distance(d).statistics(std::ref(without)));
     } else {
       // the model as it is, with refine(), which also cuts fragments along chords
-      PDS::sample_surface(traits, boost::make_function_output_iterator([](const auto&) {}),
+      n_refined = 0;
+      PDS::sample_surface(traits, boost::make_function_output_iterator([&](const auto&) { ++n_refined; }),
                           PDS::parameters::minimum_distance(d).statistics(std::ref(refined)));
     }
   });
@@ -542,8 +557,8 @@ void union_test_case(benchmark::State& state, const std::string& name)
     else if(v == 1) PDS::sample_surface(plain, store, np);
     else PDS::sample_surface(traits, store, np);
   }
-  if(out[0].size() != n_with || out[1].size() != n_without) {
-    state.SkipWithError("a run with the same seed gave another number of points");
+  if(out[0].size() != n_with || out[1].size() != n_without || out[2].size() != n_refined) {
+    fail(state, "a run with the same seed gave another number of points");
     return;
   }
   for(std::size_t v = 0; v < 3; ++v)
@@ -578,8 +593,6 @@ void long_faces_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
   const double d = distance_for(PMP::area(m), double(state.range(0)));
-  const PDS::Triangle_fragment_traits_3 traits = triangles_of(m);
-  const Whole_faces_only whole(traits);
   std::vector<Point> points[2];
   PDS::Sampling_statistics stats[2];
   double peak[2] = {0, 0};
@@ -587,6 +600,9 @@ void long_faces_case(benchmark::State& state, const std::string& name)
     points[v].clear();
     points[v].shrink_to_fit();
     const Heap_peak heap;
+    // the triangle table in the timed run and the heap's peak, as sample_triangle_mesh() in mesh/
+    const PDS::Triangle_fragment_traits_3 traits = triangles_of(m);
+    const Whole_faces_only whole(traits);
     auto out = boost::make_function_output_iterator([&](const PDS::Triangle_fragment_traits_3::Sample& s) {
       points[v].push_back(Point(s.point[0], s.point[1], s.point[2]));
     });
@@ -595,8 +611,9 @@ void long_faces_case(benchmark::State& state, const std::string& name)
     else PDS::sample_surface(whole, out, np);
     peak[v] = heap.bytes();
   });
-  for(const auto& p : points)
-    if(!validate(state, m, p, d)) return;
+  // (the check times reported are those of the model's output)
+  for(std::size_t v = 0; v < 2; ++v)
+    if(!validate(state, m, points[v], d, v == 0)) return;
   state.counters["faces"] = double(num_faces(m));
   state.counters["points"] = double(points[0].size());
   state.counters["seconds"] = best[0];
@@ -607,11 +624,11 @@ void long_faces_case(benchmark::State& state, const std::string& name)
   state.counters["peak_active_fragments_per_point"] = double(stats[0].peak_active_fragments) / double(points[0].size());
   state.counters["peak_active_fragments_per_point_whole_faces"] =
       double(stats[1].peak_active_fragments) / double(points[1].size());
-  // the peak of the heap during the call, the output vector included, against the budget of 200 bytes
-  // a point and 300 a face (the face table is built before the call: not counted, as in mesh/)
-  const double budget = 200 * double(points[0].size()) + 300 * double(num_faces(m));
-  state.counters["memory_budget_use"] = peak[0] / budget;
-  state.counters["memory_budget_use_whole_faces"] = peak[1] / budget;
+  // the peak of the heap during the run, the triangle table and the output vector included, against
+  // the budget of 200 bytes a point and 300 a face, each variant against its own number of points
+  for(std::size_t v = 0; v < 2; ++v)
+    state.counters[v == 0 ? "memory_budget_use" : "memory_budget_use_whole_faces"] =
+        peak[v] / (200 * double(points[v].size()) + 300 * double(num_faces(m)));
 }
 
 // A needle longer than 2^12 times the distance: the triangle (0, 0, 0), (L, 0, 0), (L, 10^-8, 0) at
@@ -641,12 +658,12 @@ void long_rows_case(benchmark::State& state)
     state.SetIterationTime(seconds);
   }
   if(!PDS::is_poisson_disk_set(points, d)) {
-    state.SkipWithError("output is not a Poisson-disk set");
+    fail(state, "output is not a Poisson-disk set");
     return;
   }
   const auto maximal = PDS::is_maximal(m, points, d);
   if(!maximal && maximal.uncovered_point) {
-    state.SkipWithError("output is not maximal");
+    fail(state, "output is not maximal");
     return;
   }
   state.counters["certified"] = maximal ? 1 : 0;
@@ -674,7 +691,7 @@ void threads_case(benchmark::State& state, const std::string& name)
                                 PDS::parameters::minimum_distance(d).concurrency(CGAL::Parallel_tag()));
   });
   if(points[0] != points[1]) {
-    state.SkipWithError("the parallel run gave other points than the sequential one");
+    fail(state, "the parallel run gave other points than the sequential one");
     return;
   }
   if(!validate(state, m, points[1], d)) return;
@@ -685,61 +702,68 @@ void threads_case(benchmark::State& state, const std::string& name)
   state.counters["speedup"] = best[0] / best[1];
 }
 
+// Registers a case whose exceptions are reported as its error (Target_not_reached from a search, say),
+// instead of ending the whole run.
+template <class Case>
+benchmark::internal::Benchmark* add(const std::string& name, Case run)
+{
+  return benchmark::RegisterBenchmark(name.c_str(), [run](benchmark::State& state) {
+    try {
+      run(state);
+    } catch(const std::exception& e) {
+      fail(state, std::string("exception: ") + e.what());
+    }
+  });
+}
+
 void register_cases()
 {
   for(const char* name : {"lion.off", "armadillo.off", "armadillo_loop3"})
     for(int n : {10000, 100000, 1000000})
-      benchmark::RegisterBenchmark((std::string("mesh/") + name).c_str(),
-                                   [name](benchmark::State& s) { mesh_case(s, name); })
+      add(std::string("mesh/") + name, [name](benchmark::State& s) { mesh_case(s, name); })
           ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {10000, 100000, 1000000})
-    benchmark::RegisterBenchmark("sphere", sphere_case)
+    add("sphere", sphere_case)
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
-    benchmark::RegisterBenchmark("count_mode/lion.off",
-                                 [](benchmark::State& s) { count_mode_case(s, "lion.off"); })
+    add("count_mode/lion.off", [](benchmark::State& s) { count_mode_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   // strips far narrower than the distance, where a sample covers far less than the first estimate
   // assumes (first runs of 1,267 and 127 times the target, stopped at twice it)
   for(const char* name : {"strips_1e-7", "strips_1e-5"})
-    benchmark::RegisterBenchmark((std::string("count_mode/") + name).c_str(),
-                                 [name](benchmark::State& s) { count_mode_case(s, name); })
+    add(std::string("count_mode/") + name, [name](benchmark::State& s) { count_mode_case(s, name); })
         ->Arg(10000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100, 150})
-    benchmark::RegisterBenchmark("count_search/elephant.off",
-                                 [](benchmark::State& s) { count_search_case(s, "elephant.off"); })
+    add("count_search/elephant.off", [](benchmark::State& s) { count_search_case(s, "elephant.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100, 1000, 10000})
-    benchmark::RegisterBenchmark("count_spread/elephant.off",
-                                 [](benchmark::State& s) { count_spread_case(s, "elephant.off"); })
+    add("count_spread/elephant.off", [](benchmark::State& s) { count_spread_case(s, "elephant.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
-    benchmark::RegisterBenchmark("sampling_only/lion.off", [](benchmark::State& s) { sampling_only_case(s, "lion.off"); })
+    add("sampling_only/lion.off", [](benchmark::State& s) { sampling_only_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   // a mesh of few faces, where the budget has almost nothing but the points: what the sampler itself
   // holds (see benchmark/README.md, "Where the figures are short")
-  benchmark::RegisterBenchmark("sampling_only/pipe.off", [](benchmark::State& s) { sampling_only_case(s, "pipe.off"); })
+  add("sampling_only/pipe.off", [](benchmark::State& s) { sampling_only_case(s, "pipe.off"); })
       ->Arg(10000)->Arg(100000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
-    benchmark::RegisterBenchmark("union_test/lion.off", [](benchmark::State& s) { union_test_case(s, "lion.off"); })
+    add("union_test/lion.off", [](benchmark::State& s) { union_test_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   // CGAL's meshes with the longest faces at D (the slowest at 10,000 points with whole faces), two
   // without such faces, and a cylinder of full-height triangles against the same surface in rings
   for(const char* name : {"pinion.off", "pipe.off", "anchor.off", "joint.off", "boeing.off", "cheese.off",
                           "blade.off", "lion.off", "fandisk.off", "cylinder_128", "cylinder_rings"})
-    benchmark::RegisterBenchmark((std::string("long_faces/") + name).c_str(),
-                                 [name](benchmark::State& s) { long_faces_case(s, name); })
+    add(std::string("long_faces/") + name, [name](benchmark::State& s) { long_faces_case(s, name); })
         ->Arg(std::string(name).rfind("cylinder", 0) == 0 ? 2000 : 10000)
         ->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int k : {12, 14, 16, 17, 18})
-    benchmark::RegisterBenchmark("long_rows", long_rows_case)
+    add("long_rows", long_rows_case)
         ->Arg(k)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100000, 1000000})
-    benchmark::RegisterBenchmark("threads/lion.off", [](benchmark::State& s) { threads_case(s, "lion.off"); })
+    add("threads/lion.off", [](benchmark::State& s) { threads_case(s, "lion.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(const char* name : {"lion.off", "armadillo_loop3"})
-    benchmark::RegisterBenchmark((std::string("linearity/") + name).c_str(),
-                                 [name](benchmark::State& s) { linearity_case(s, name); })
+    add(std::string("linearity/") + name, [name](benchmark::State& s) { linearity_case(s, name); })
         ->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
 }
 
@@ -792,5 +816,5 @@ int main(int argc, char** argv)
   if(benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  return 0;
+  return any_case_failed ? 1 : 0;
 }
