@@ -12,9 +12,14 @@
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 
 #include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
+#include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <set>
+#include <thread>
 #include <tuple>
 
 namespace {
@@ -158,6 +163,61 @@ TEST(MeshSampling, ThreadsGiveTheSamePoints)
     EXPECT_EQ(parallel_count, counted) << threads << " threads";
   }
   expect_maximal_poisson_disk_set(m, sequential, d);
+}
+
+// The triangle model, recording the threads its random_sample() runs on.
+struct Recording_threads : PDS::Triangle_fragment_traits_3
+{
+  mutable std::mutex mutex;
+  mutable std::set<std::thread::id> threads;
+  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const
+  {
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      threads.insert(std::this_thread::get_id());
+    }
+    return PDS::Triangle_fragment_traits_3::random_sample(f, rng);
+  }
+};
+
+// concurrency(CGAL::Parallel_tag()) does throw darts on more than one thread (the tests above, which
+// compare with the sequential run, also pass where the parallel loops run on one).
+TEST(MeshSampling, ThreadsThrowDartsInParallel)
+{
+  if(tbb::this_task_arena::max_concurrency() < 2) GTEST_SKIP() << "one thread";
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+  Recording_threads traits;
+  for(int i = 0; i < 64; ++i) traits.add_triangle({{double(i), 0, 0}}, {{i + 1., 0, 0}}, {{double(i), 1, 0}});
+  std::vector<PDS::Triangle_fragment_traits_3::Sample> out;
+  PDS::sample_surface(traits, std::back_inserter(out),
+                      PDS::parameters::minimum_distance(0.02).random_seed(1).concurrency(CGAL::Parallel_tag()));
+  EXPECT_GT(out.size(), 10000u);
+  EXPECT_GE(traits.threads.size(), 2u);
+}
+
+// The first sample of a run is uniform on the surface: on the unit right triangle, its x coordinate has
+// the distribution function 1 - (1 - x)^2, over 400 seeds (a Kolmogorov-Smirnov bound at the 0.1%
+// level). A sample drawn as (a, b (1 - a)), on the triangle but crowded at its corner x = 1, fails it.
+TEST(MeshSampling, FirstSampleIsUniformOnATriangle)
+{
+  const std::vector<Point> corners{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  const std::vector<std::array<int, 3>> triangle{{{0, 1, 2}}};
+  std::vector<double> xs;
+  for(unsigned seed = 0; seed < 400; ++seed) {
+    std::vector<Point> points;
+    PDS::sample_polygon_soup(corners, triangle, std::back_inserter(points),
+                             PDS::parameters::minimum_distance(0.3).random_seed(seed));
+    ASSERT_FALSE(points.empty());
+    xs.push_back(points.front().x());
+  }
+  std::sort(xs.begin(), xs.end());
+  double ks = 0;
+  const double n = double(xs.size());
+  for(std::size_t i = 0; i < xs.size(); ++i) {
+    const double cdf = 1 - (1 - xs[i]) * (1 - xs[i]);
+    ks = std::max({ks, std::abs(cdf - double(i) / n), std::abs(cdf - double(i + 1) / n)});
+  }
+  EXPECT_LT(ks, 1.95 / std::sqrt(n));
 }
 
 // Called from a task of a tbb::task_group that has been cancelled (another of its tasks threw, or

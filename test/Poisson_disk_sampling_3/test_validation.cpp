@@ -127,18 +127,26 @@ TEST(IsPoissonDiskSet, DecidesExactlyAtTheThreshold)
 {
   // 0.1 + 0.2 is not 0.3 in double: the pair's distance is a hair above or below the threshold
   const double a = 0.1, b = 0.2;
-  const double d = (a + b) - a; // rounded; the exact distance of the pair below is b
   std::vector<Point> pair{Point(a, 0, 0), Point(a + b, 0, 0)};
   const double exact = CGAL::to_double((CGAL::Exact_rational(a + b) - CGAL::Exact_rational(a)));
   EXPECT_EQ(bool(PDS::is_poisson_disk_set(pair, exact)), true) << "distance equal to d is allowed";
   EXPECT_EQ(bool(PDS::is_poisson_disk_set(pair, std::nextafter(exact, 1.))), false) << "one ulp more is not";
   EXPECT_EQ(bool(PDS::is_poisson_disk_set(pair, std::nextafter(exact, 0.))), true);
-  (void)d;
-  // in 3D, with a squared distance that double arithmetic rounds to the threshold
-  const Point p(1e8, 0, 0), q(1e8 + 3, 4, 0); // distance exactly 5
+  // in 3D, far from the origin, distance exactly 5
+  const Point p(1e8, 0, 0), q(1e8 + 3, 4, 0);
   std::vector<Point> pq{p, q};
   EXPECT_TRUE(PDS::is_poisson_disk_set(pq, 5.));
   EXPECT_FALSE(PDS::is_poisson_disk_set(pq, std::nextafter(5., 6.)));
+  // 3 s, 4 s and 5 s, each a double, make a pair exactly d apart, whose squares in double arithmetic
+  // do not: (3 s)^2 + (4 s)^2 rounds below (5 s)^2. A test that trusted the doubles would refuse it.
+  const double x = 3.090883054775892, y = 4.121177406367856, d = 5.15147175795982;
+  const CGAL::Exact_rational ex(x), ey(y), ed(d);
+  ASSERT_EQ(ex * ex + ey * ey, ed * ed) << "the pair is exactly d apart";
+  ASSERT_LT(CGAL::to_double(CGAL::Exact_rational(x * x) + CGAL::Exact_rational(y * y)), d * d)
+      << "the rounded squares fall below d^2";
+  const std::vector<Point> rounded{Point(0, 0, 0), Point(x, y, 0)};
+  EXPECT_TRUE(PDS::is_poisson_disk_set(rounded, d));
+  EXPECT_FALSE(PDS::is_poisson_disk_set(rounded, std::nextafter(d, 10.)));
 }
 
 // Where d^2 is a subnormal double, its rounding error is absolute, not relative: the floating-point
@@ -223,6 +231,9 @@ TEST(IsPoissonDiskSet, RefusesPointsTooFarForTheDistance)
     EXPECT_EQ(c.first, 0u);
     EXPECT_EQ(c.second, 1u);
   }
+  // the bound itself: one point at 2^44 + 1 times the distance
+  EXPECT_THROW(PDS::is_poisson_disk_set(std::vector<Point>{{0x1.0p44 + 1, 0, 0}}, 1), PDS::Invalid_input);
+  EXPECT_NO_THROW(PDS::is_poisson_disk_set(std::vector<Point>{{0x1.0p44, 0, 0}}, 1));
   for(const int e : {45, 50, 60}) {
     const double far = std::ldexp(1., e);
     const std::vector<Point> points{{far, far, far}, {far, far + 2, far}};
