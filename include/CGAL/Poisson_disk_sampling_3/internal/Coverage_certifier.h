@@ -34,19 +34,19 @@ struct Certificate
 /// it fails. Each root fragment is split with the model's own `split` until one sample's ball covers
 /// each piece (the model's conservative `is_covered`).
 ///
-/// The work and the memory are bounded. The work is counted in decisions, a decision being one piece
-/// decided plus a sixteenth for each sample within reach of it that it tests (so that a cluster of
-/// many samples, which each decision near it scans, counts for what it costs). A piece whose reference
-/// point is farther than D from every sample, by more than the point's rounding (decided exactly), is
-/// a proven gap: it is refined only down to `leaf_area` for the area estimate; once a gap is proven
-/// and a quarter of `budget` more decisions spent, so is every piece not proven covered. Pieces still
-/// undecided below D^2 / 2^24 are deferred: in a maximal set they are the few that sit where two ball
-/// boundaries cross close to a piece's edge, and they are refined breadth-first down to `max_depth`,
-/// until a gap is proven or a budget is spent. Around a real gap, many pieces straddle its boundary;
-/// refining all of them depth-first would take time exponential in the depth. At most `budget / 4`
-/// pieces wait at a time, in one queue; beyond that a piece counts as not proven covered, as do the
-/// pieces left when the budget is spent, and those that the first phase would split after `budget`
-/// decisions and 256 per sample and per root: the answer is then `false` with no witness, undecided.
+/// The work and the memory are bounded. The work counts one for each piece decided and a sixteenth for
+/// each sample within reach of it that the decision tests (so that a cluster of many samples, which
+/// each decision near it scans, counts for what it costs). A piece whose reference point is farther
+/// than D from every sample, by more than the point's rounding (decided exactly), is a proven gap: it
+/// is refined only down to `leaf_area` for the area estimate; once a gap is proven and a quarter of
+/// `budget` more work spent, so is every piece not proven covered. Pieces still undecided below
+/// D^2 / 2^24 are deferred: in a maximal set they are the few that sit where two ball boundaries cross
+/// close to a piece's edge, and they are refined breadth-first down to `max_depth`, until a gap is proven or
+/// a budget is spent. Around a real gap, many pieces straddle its boundary; refining all of them
+/// depth-first would take time exponential in the depth. At most `budget / 4` pieces wait at a time, in
+/// one queue; beyond that a piece counts as not proven covered, as do the pieces left when the budget
+/// is spent, and those that the first phase would split after `budget` of work and 256 per sample and
+/// per root: the answer is then `false` with no witness, undecided.
 template <class Traits>
 Certificate certify_coverage(const Traits& traits, const Point_hash_grid& samples, double d,
                              int max_depth = 48, std::size_t budget = 10000000)
@@ -160,11 +160,11 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       if(decided_at[j] < 1024 || undecided_at[j] * 20 < decided_at[j] * 19) return;
     filling = true;
   };
-  // The first phase's work: pieces that no ball holds are split down to the deferral size, and a
-  // model whose is_covered() never succeeds (a wrong test) would have the whole surface split so,
-  // about 2^24 area / d^2 decisions (270 million on a unit square at d = 0.25, four times as many each
-  // time d halves). Past `budget` decisions and 256 per sample and per root, such pieces count as not
-  // proven covered, without being split. (Maximal sets took 3 to 44 per sample and root, counted on
+  // The first phase's work: pieces that no ball holds are split down to the deferral size, and a model
+  // whose is_covered() never succeeds (a wrong test) would have the whole surface split so, about 2^24
+  // area / d^2 decisions (270 million on a unit square at d = 0.25, four times as many each time d
+  // halves). Past `budget` of work and 256 per sample and per root, such pieces count as not proven
+  // covered, without being split. (Maximal sets took 3 to 44 decisions per sample and root, counted on
   // CGAL's meshes at 1,000 to 100,000 points, and on a needle 2^14 d long, the most.)
   std::size_t roots = 0;
   const auto over_budget = [&] { return work() > budget + 256 * (samples.size() + roots); };
@@ -183,7 +183,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
       }
       if(v == GAP_LEAF) result.uncovered_area += area;
       // Once a gap is proven the answer is known, and what is left is the area estimate. After a
-      // quarter of the budget of decisions spent on it, a piece of leaf size that no single ball holds
+      // quarter of the budget of work spent on it, a piece of leaf size that no single ball holds
       // counts whole instead of being refined across the balls' boundaries down to the deferral size,
       // which costs time and memory in proportion to the boundaries' length over that size.
       else if(result.has_witness && area <= leaf_area && work() - work_at_gap > budget / 4)
