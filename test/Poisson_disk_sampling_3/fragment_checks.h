@@ -8,9 +8,26 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
 #include <vector>
+
+// The Kolmogorov-Smirnov distance between the sample `xs` and the distribution function `cdf`; the
+// sample comes from that distribution with 99.9% probability where it is below 1.95 / sqrt(n).
+template <class Cdf>
+double one_sample_ks_distance(std::vector<double> xs, Cdf cdf)
+{
+  std::sort(xs.begin(), xs.end());
+  const double n = double(xs.size());
+  double ks = 0;
+  for(std::size_t i = 0; i < xs.size(); ++i) {
+    const double f = cdf(xs[i]);
+    ks = (std::max)({ks, std::abs(f - double(i) / n), std::abs(f - double(i + 1) / n)});
+  }
+  return ks;
+}
 
 // a fragment `levels` splits below `f`, taking a random child at each split
 template <class Traits, class Random>

@@ -763,7 +763,7 @@ TEST(Certificate, CopiesAndClustersOfSamplesAreBounded)
   // refining once it has done a quarter of the budget's work, each test a sixteenth of a decision
   std::vector<double> xyz;
   for(int i = 0; i < 1000; ++i) xyz.insert(xyz.end(), {0.5 + 1e-9 * i, 0.5, 0});
-  const PDS::internal::Point_hash_grid grid(2 * d, xyz.data(), 1000);
+  const PDS::internal::Point_hash_grid grid = PDS::internal::grid_of(xyz, d);
   const std::size_t budget = 40000;
   Counting_square::tests = 0;
   const PDS::internal::Certificate c = PDS::internal::certify_coverage(Counting_square(), grid, d, 48, budget);
@@ -783,11 +783,7 @@ TEST(Engine, FirstDartIsUniform)
   const Square_traits traits;
   std::vector<double> xs;
   for(unsigned seed = 0; seed < 400; ++seed) xs.push_back(sample_square(traits, 0.5, seed).front()[0]);
-  std::sort(xs.begin(), xs.end());
-  double ks = 0;
-  for(std::size_t i = 0; i < xs.size(); ++i)
-    ks = std::max({ks, std::abs(xs[i] - double(i) / double(xs.size())), std::abs(xs[i] - double(i + 1) / double(xs.size()))});
-  EXPECT_LT(ks, 1.95 / std::sqrt(double(xs.size())));
+  EXPECT_LT(one_sample_ks_distance(xs, [](double x) { return x; }), 1.95 / std::sqrt(double(xs.size())));
 }
 
 // Darts thrown in batches are the same process as darts thrown one by one: the k-th sample's distance

@@ -4,6 +4,7 @@
 // Sampling triangle meshes from CGAL's data set: exact minimum distance, maximality certificate,
 // reproducibility, agreement between mesh types and soups, density, number_of_points, locations.
 
+#include "fragment_checks.h"
 #include "test_support.h"
 
 #include <CGAL/Polyhedron_3.h>
@@ -210,14 +211,8 @@ TEST(MeshSampling, FirstSampleIsUniformOnATriangle)
     ASSERT_FALSE(points.empty());
     xs.push_back(points.front().x());
   }
-  std::sort(xs.begin(), xs.end());
-  double ks = 0;
-  const double n = double(xs.size());
-  for(std::size_t i = 0; i < xs.size(); ++i) {
-    const double cdf = 1 - (1 - xs[i]) * (1 - xs[i]);
-    ks = std::max({ks, std::abs(cdf - double(i) / n), std::abs(cdf - double(i + 1) / n)});
-  }
-  EXPECT_LT(ks, 1.95 / std::sqrt(n));
+  EXPECT_LT(one_sample_ks_distance(xs, [](double x) { return 1 - (1 - x) * (1 - x); }),
+            1.95 / std::sqrt(double(xs.size())));
 }
 
 // Called from a task of a tbb::task_group that has been cancelled (another of its tasks threw, or
