@@ -252,6 +252,31 @@ TEST(ActiveFragmentPool, BatchRemovesExactlyTheTakenOnes)
   EXPECT_EQ(left, expected);
 }
 
+// The pool's free room: a bin of few fragments holds a small first chunk, not a whole one, a bin
+// holds at most one chunk of free room, and an emptied bin keeps at most a first chunk of 16, the pool
+// four spare chunks.
+TEST(ActiveFragmentPool, FreeRoomIsBounded)
+{
+  typedef PDS::internal::Active_fragment_pool<int> Pool;
+  Pool pool(1.0);
+  // ten fragments in each of 30 bins (areas 2^-b)
+  for(int b = 0; b < 30; ++b)
+    for(int i = 0; i < 10; ++i) pool.push(b, std::ldexp(0.75, -b));
+  EXPECT_LE(pool.capacity(), 30u * 16u);
+  // then thousands in some of them, taken away in random batches
+  Random rng(9);
+  for(int i = 0; i < 20000; ++i) pool.push(i, std::ldexp(0.5 + 0.5 * rng.uniform(), -int(rng.uniform_index(6))));
+  const std::size_t bins_in_use = 30, chunk = 256;
+  while(!pool.empty()) {
+    pool.begin_batch();
+    for(int i = 0; i < 300; ++i) pool.take(pool.draw(rng));
+    pool.end_batch();
+    ASSERT_LE(pool.capacity(), pool.size() + bins_in_use * chunk + 4 * chunk);
+  }
+  // the emptied bins keep their first chunk only where it is the smallest, besides the four spares
+  EXPECT_LE(pool.capacity(), 4 * chunk + bins_in_use * 16);
+}
+
 using pds_test::Square_traits;
 
 // the point of a root triangle fragment at parameters (u, v), through the model's own operations:

@@ -37,11 +37,13 @@ namespace internal {
 /// accesses can overlap. `take()` marks a drawn fragment for removal at `end_batch()`; `push()` may be
 /// called at any time.
 ///
-/// Memory: a bin stores its fragments in chunks of 256, so that the pool never holds more than two
-/// chunks of free room per bin (one is kept in reserve) and never copies a bin to grow it (a
-/// doubling vector holds up to twice its contents, three times while it moves). The areas are not
-/// stored: the caller passes the fragment's area to `accepts()` (the engine computes it from the
-/// model, which the dart reads anyway).
+/// Memory: a bin stores its fragments in chunks of 256, so that it never holds more than one chunk
+/// of free room and never copies more than its first 128 fragments to grow (a doubling vector holds
+/// up to twice its contents, three times while it moves). Its first chunk starts at 16 fragments and
+/// doubles up to 256, and the chunks that bins empty wait for other bins in a list of at most four,
+/// so that the free room of the bins in use (about 20 at a time) weighs little even at a few thousand
+/// points. The areas are not stored: the caller passes the fragment's area to `accepts()` (the engine
+/// computes it from the model, which the dart reads anyway).
 template <class Item>
 class Active_fragment_pool
 {
@@ -63,6 +65,13 @@ public:
   bool empty() const { return size_ == 0; }
   /// fragments in the pool, counting the ones taken in the current batch
   std::size_t size() const { return size_; }
+  /// the fragments the pool's memory holds room for, its spare chunks included
+  std::size_t capacity() const
+  {
+    std::size_t c = spares_.chunks.size() * Chunked_array::chunk_size();
+    for(const Chunked_array& bin : bins_) c += bin.capacity();
+    return c;
+  }
 
   void push(const Item& item, double area)
   {
@@ -78,7 +87,7 @@ public:
     if(bins_[b].size() >= std::numeric_limits<std::uint32_t>::max())
       throw Point_limit_exceeded("2^32 - 1 active fragments of about the same area, the most a bin holds; "
                                  "use a larger distance or fewer points");
-    bins_[b].push_back(item);
+    bins_[b].push_back(item, spares_);
     if(size_ == 0 || b < first_) first_ = b;
     if(size_ == 0 || b > last_) last_ = b;
     ++size_;
@@ -165,10 +174,10 @@ public:
     // answers whether an entry is taken, and an entry refilled with a live one leaves the set.
     for(const Handle& h : taken_) {
       Chunked_array& bin = bins_[h.bin];
-      while(!bin.empty() && is_taken(Handle{h.bin, std::uint32_t(bin.size() - 1)})) bin.pop_back();
+      while(!bin.empty() && is_taken(Handle{h.bin, std::uint32_t(bin.size() - 1)})) bin.pop_back(spares_);
       if(h.index >= bin.size()) continue;
       bin[h.index] = bin.back();
-      bin.pop_back();
+      bin.pop_back(spares_);
       untake(h);
     }
     std::fill(taken_set_.begin(), taken_set_.end(), std::uint64_t(0));
@@ -177,33 +186,75 @@ public:
   }
 
 private:
-  // a growable array in chunks of 256: indexing reads the chunk's address (the chunk tables are
-  // small and stay in cache), then the item
+  // Full chunks that bins have emptied, for any bin to take: a bin at a chunk boundary, pushed and
+  // popped in turn, moves one chunk between itself and this list instead of allocating it each time.
+  // At most `max_spares` of them are kept.
+  struct Spare_chunks
+  {
+    static constexpr std::size_t max_spares = 4;
+    std::vector<std::unique_ptr<Item[]>> chunks;
+  };
+
+  // A growable array in chunks of 256: indexing reads the chunk's address (the chunk tables are
+  // small and stay in cache), then the item. The first chunk starts at 16 items and is copied to
+  // twice its size until it holds 256, so that a bin of few fragments (the pool has one per
+  // octave of area, about 20 in use at a time) does not hold a whole chunk.
   class Chunked_array
   {
   public:
     std::size_t size() const { return size_; }
     bool empty() const { return size_ == 0; }
+    std::size_t capacity() const { return capacity_; }
+    static constexpr std::size_t chunk_size() { return chunk; }
     Item& operator[](std::size_t i) { return chunks_[i >> shift][i & (chunk - 1)]; }
     const Item& operator[](std::size_t i) const { return chunks_[i >> shift][i & (chunk - 1)]; }
     Item& back() { return (*this)[size_ - 1]; }
-    void push_back(const Item& x)
+    void push_back(const Item& x, Spare_chunks& spares)
     {
-      if(size_ == chunks_.size() * chunk) chunks_.emplace_back(new Item[chunk]);
+      if(size_ == capacity_) grow(spares);
       (*this)[size_++] = x;
     }
-    void pop_back()
+    void pop_back(Spare_chunks& spares)
     {
       --size_;
-      // keep one empty chunk in reserve, so that a bin at a chunk boundary does not allocate and
-      // free a chunk at each push and pop
-      if(chunks_.size() * chunk >= size_ + 2 * chunk) chunks_.pop_back();
+      if(size_ == 0 && capacity_ > first_chunk) {
+        // an empty bin keeps no chunk of the sizes above the first: most bins empty once, as the
+        // fragments of their octave of area are used up
+        chunks_.clear();
+        capacity_ = 0;
+      } else if(chunks_.size() > 1 && size_ == capacity_ - chunk) {
+        // the last chunk is empty: it goes to the spares, or is freed
+        if(spares.chunks.size() < Spare_chunks::max_spares) spares.chunks.push_back(std::move(chunks_.back()));
+        chunks_.pop_back();
+        capacity_ -= chunk;
+      }
     }
 
   private:
-    static constexpr std::size_t shift = 8, chunk = std::size_t(1) << shift;
+    void grow(Spare_chunks& spares)
+    {
+      if(capacity_ < chunk) {
+        // the first chunk, copied to twice its size
+        const std::size_t c = capacity_ == 0 ? first_chunk : 2 * capacity_;
+        std::unique_ptr<Item[]> larger(new Item[c]);
+        if(capacity_ > 0) std::copy(chunks_[0].get(), chunks_[0].get() + size_, larger.get());
+        if(chunks_.empty()) chunks_.emplace_back();
+        chunks_[0] = std::move(larger);
+        capacity_ = c;
+        return;
+      }
+      if(!spares.chunks.empty()) {
+        chunks_.push_back(std::move(spares.chunks.back()));
+        spares.chunks.pop_back();
+      } else {
+        chunks_.emplace_back(new Item[chunk]);
+      }
+      capacity_ += chunk;
+    }
+
+    static constexpr std::size_t shift = 8, chunk = std::size_t(1) << shift, first_chunk = 16;
     std::vector<std::unique_ptr<Item[]>> chunks_;
-    std::size_t size_ = 0;
+    std::size_t size_ = 0, capacity_ = 0;
   };
 
   // never 0, and bit 63 is never set (there are far fewer than 2^31 bins)
@@ -273,6 +324,7 @@ private:
   double max_mantissa_; // max_area_ 2^-max_exponent_, in [1, 2) even where max_area_ is subnormal
   int normal_bins_; // bins 0 to normal_bins_ - 1 have bounds max_area_ 2^-b that are normal doubles
   std::vector<Chunked_array> bins_;
+  Spare_chunks spares_;
   std::vector<double> bounds_; // bin_bound(b), so that a pick calls no ldexp
   std::size_t first_ = 0, last_ = 0; // the non-empty bins are among [first_, last_]
   std::size_t size_ = 0;
