@@ -31,10 +31,12 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <cstdint>
 #include <fstream>
 #include <new>
 #include <optional>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -215,6 +217,33 @@ bool validate(benchmark::State& state, const Surface& surface, const std::vector
 
 // ---- cases --------------------------------------------------------------------------------------
 
+// The cases that compare variants (two sizes, with and without a test) run them in turn,
+// `comparison_runs` times each, and keep the fastest of each: a change of the host's speed during the
+// case (which moves a single run by 10 to 20% on the machine of benchmark/README.md) then weighs on
+// all alike. `run(v)` runs variant v (0 to N - 1) once; returns the fastest seconds of each variant
+// and sets the case's time to the total.
+constexpr int comparison_runs = 3;
+template <std::size_t N = 2, class Run>
+std::array<double, N> fastest_alternating(benchmark::State& state, Run run)
+{
+  std::array<double, N> best;
+  best.fill(1e300);
+  for(auto _ : state) {
+    double total = 0;
+    for(int r = 0; r < comparison_runs; ++r)
+      for(std::size_t v = 0; v < N; ++v) {
+        const auto start = std::chrono::steady_clock::now();
+        run(v);
+        const double s = seconds_since(start);
+        best[v] = std::min(best[v], s);
+        total += s;
+      }
+    state.SetIterationTime(total);
+  }
+  state.counters["runs"] = comparison_runs;
+  return best;
+}
+
 // Radius mode on a mesh, with about `n` points; args: n
 void mesh_case(benchmark::State& state, const std::string& name)
 {
@@ -287,38 +316,78 @@ void sphere_case(benchmark::State& state)
   state.counters["floor_ratio"] = seconds / floor;
 }
 
-// number_of_points mode against the radius mode giving the same count: args: n
+// The number_of_points mode at `seed` on `m`, and the radius mode at the distance and seed its
+// search settled on, in turn, `comparison_runs` times each (the fastest of each is kept, see
+// fastest_alternating()): checks that each run of the count mode gives the same points, that the
+// radius mode gives as many, and validates the output (outside the timings). Returns false if a
+// check failed (the case's error is set).
+struct Count_run
+{
+  std::size_t points = 0, runs = 0, stopped_runs = 0;
+  double seconds = 1e300, radius_seconds = 1e300;
+};
+bool count_and_radius(benchmark::State& state, const Mesh& m, std::size_t n, std::uint64_t seed, Count_run& out,
+                      bool report_check_seconds)
+{
+  std::vector<Point> first;
+  PDS::Sampling_statistics stats;
+  for(int r = 0; r < comparison_runs; ++r) {
+    std::vector<Point> points, again;
+    auto start = std::chrono::steady_clock::now();
+    PDS::sample_triangle_mesh(m, std::back_inserter(points),
+                              PDS::parameters::number_of_points(n).random_seed(seed).statistics(std::ref(stats)));
+    out.seconds = (std::min)(out.seconds, seconds_since(start));
+    start = std::chrono::steady_clock::now();
+    PDS::sample_triangle_mesh(m, std::back_inserter(again), PDS::parameters::minimum_distance(stats.minimum_distance)
+                                                                .random_seed(stats.random_seed));
+    out.radius_seconds = (std::min)(out.radius_seconds, seconds_since(start));
+    if(again.size() != points.size()) {
+      fail(state, "the radius mode at the distance and seed the search settled on gave another number of points");
+      return false;
+    }
+    if(r == 0) {
+      first = std::move(points);
+    } else if(points != first) {
+      fail(state, "the count mode gave other points at the same seed");
+      return false;
+    }
+  }
+  out.points = first.size();
+  out.runs = stats.number_of_runs;
+  out.stopped_runs = stats.stopped_runs;
+  return validate(state, m, first, stats.minimum_distance, report_check_seconds);
+}
+
+// number_of_points mode against the radius mode giving the same count, at the default seed (0), the
+// fastest of three alternating runs of each: args: n. On the strips, where the search takes several
+// full runs and its time depends on where they land, the same for seeds 1 to 4 (their smallest and
+// largest ratio).
 void count_mode_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
   const std::size_t n = std::size_t(state.range(0));
-  std::vector<Point> points;
-  PDS::Sampling_statistics stats;
-  double seconds = 0;
+  Count_run run;
   for(auto _ : state) {
-    points.clear();
-    const auto start = std::chrono::steady_clock::now();
-    PDS::sample_triangle_mesh(m, std::back_inserter(points),
-                              PDS::parameters::number_of_points(n).statistics(std::ref(stats)));
-    seconds = seconds_since(start);
-    state.SetIterationTime(seconds);
+    if(!count_and_radius(state, m, n, 0, run, true)) return;
+    state.SetIterationTime(run.seconds); // the fastest of the count mode's runs
   }
-  if(!validate(state, m, points, stats.minimum_distance)) return;
-  std::vector<Point> again;
-  const auto start = std::chrono::steady_clock::now();
-  PDS::sample_triangle_mesh(m, std::back_inserter(again),
-                            PDS::parameters::minimum_distance(stats.minimum_distance).random_seed(stats.random_seed));
-  const double radius_seconds = seconds_since(start);
-  if(again.size() != points.size()) {
-    fail(state, "the radius mode at the distance and seed the search settled on gave another number of points");
-    return;
+  state.counters["points"] = double(run.points);
+  state.counters["runs"] = double(run.runs);
+  state.counters["stopped_runs"] = double(run.stopped_runs);
+  state.counters["seconds"] = run.seconds;
+  state.counters["radius_mode_seconds"] = run.radius_seconds;
+  state.counters["count_vs_radius"] = run.seconds / run.radius_seconds; // <= 3 is the target
+  if(name.rfind("strips", 0) == 0) {
+    double lowest = std::numeric_limits<double>::infinity(), highest = 0;
+    for(std::uint64_t seed = 1; seed <= 4; ++seed) {
+      Count_run other;
+      if(!count_and_radius(state, m, n, seed, other, false)) return;
+      lowest = (std::min)(lowest, other.seconds / other.radius_seconds);
+      highest = (std::max)(highest, other.seconds / other.radius_seconds);
+    }
+    state.counters["count_vs_radius_seeds_1_to_4_min"] = lowest;
+    state.counters["count_vs_radius_seeds_1_to_4_max"] = highest;
   }
-  state.counters["points"] = double(points.size());
-  state.counters["runs"] = double(stats.number_of_runs);
-  state.counters["stopped_runs"] = double(stats.stopped_runs);
-  state.counters["seconds"] = seconds;
-  state.counters["radius_mode_seconds"] = radius_seconds;
-  state.counters["count_vs_radius"] = seconds / radius_seconds; // <= 3 is the target
 }
 
 // Small targets, whose count spreads from seed to seed by more than the 1% tolerance: the search over
@@ -385,33 +454,6 @@ void count_spread_case(benchmark::State& state, const std::string& name)
   state.counters["mean_points"] = mean;
   state.counters["deviation"] = deviation;
   state.counters["deviation_over_sqrt_mean"] = deviation / std::sqrt(mean);
-}
-
-// The cases that compare variants (two sizes, with and without a test) run them in turn,
-// `comparison_runs` times each, and keep the fastest of each: a change of the host's speed during the
-// case (which moves a single run by 10 to 20% on the machine of benchmark/README.md) then weighs on
-// all alike. `run(v)` runs variant v (0 to N - 1) once; returns the fastest seconds of each variant
-// and sets the case's time to the total.
-constexpr int comparison_runs = 3;
-template <std::size_t N = 2, class Run>
-std::array<double, N> fastest_alternating(benchmark::State& state, Run run)
-{
-  std::array<double, N> best;
-  best.fill(1e300);
-  for(auto _ : state) {
-    double total = 0;
-    for(int r = 0; r < comparison_runs; ++r)
-      for(std::size_t v = 0; v < N; ++v) {
-        const auto start = std::chrono::steady_clock::now();
-        run(v);
-        const double s = seconds_since(start);
-        best[v] = std::min(best[v], s);
-        total += s;
-      }
-    state.SetIterationTime(total);
-  }
-  state.counters["runs"] = comparison_runs;
-  return best;
 }
 
 // seconds at 1M points over seconds at 100k points, same mesh, same run
