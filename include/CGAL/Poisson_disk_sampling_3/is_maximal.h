@@ -47,16 +47,16 @@ namespace internal {
 /// the points of `xyz` (three coordinates each) with each copy of a point but one left out, in
 /// lexicographic order: each sample is tested wherever it reaches, and copies would only repeat the
 /// tests (10,000 copies of one point on 20 copies of a face took 22 s to certify). O(n log n).
-inline std::vector<double> distinct_coordinates(const std::vector<double>& xyz)
+inline std::vector<double> distinct_coordinates(std::vector<double> xyz)
 {
   std::vector<std::array<double, 3>> points(xyz.size() / 3);
   for(std::size_t i = 0; i < points.size(); ++i) points[i] = {{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}};
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
-  std::vector<double> distinct;
-  distinct.reserve(3 * points.size());
-  for(const auto& p : points) distinct.insert(distinct.end(), p.begin(), p.end());
-  return distinct;
+  // written back into `xyz`, whose memory is reused: two copies of the coordinates at most
+  xyz.resize(3 * points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) std::copy(points[i].begin(), points[i].end(), xyz.begin() + 3 * i);
+  return xyz;
 }
 
 template <class Point_3, class Traits, class PointRange>
