@@ -278,8 +278,10 @@ int main(int argc, char** argv)
           [&](const std::vector<K::Point_3>& points, double d) { return PDS::is_maximal(mesh, points, d); });
     }
     if(not_triangles > 0) {
+      // (the soup was a mesh neither as read nor once oriented; it was not oriented where a polygon
+      // repeats a vertex)
       std::cerr << "error: " << not_triangles_text << ", and the file's "
-                << "polygons make no valid polygon mesh (" << (repeats_a_vertex(soup_polygons) ? "a polygon "
+                << "polygons make no valid polygon mesh (" << (!oriented ? "a polygon "
                    "repeats a vertex" : "not even once oriented") << "), so this program cannot triangulate "
                    "them; the library samples triangles only\n";
       return 1;
