@@ -40,7 +40,7 @@ namespace internal {
 /// Memory: a bin stores its fragments in chunks of 256, so that it never holds more than one chunk
 /// of free room and never copies more than its first 128 fragments to grow (a doubling vector holds
 /// up to twice its contents, three times while it moves). Its first chunk starts at 16 fragments and
-/// doubles up to 256, and the chunks that bins empty wait for other bins in a list of at most four,
+/// doubles up to 256; the later chunks that bins empty wait for other bins in a list of at most four,
 /// so that the free room of the bins in use (about 20 at a time) weighs little even at a few thousand
 /// points. The areas are not stored: the caller passes the fragment's area to `accepts()` (the engine
 /// computes it from the model, which the dart reads anyway).
@@ -60,6 +60,8 @@ public:
       max_mantissa_(std::ldexp(max_area, -max_exponent_)), normal_bins_(max_exponent_ + 1023)
   {
     CGAL_precondition(max_area > 0 && std::isfinite(max_area));
+    // so that end_batch(), which moves emptied chunks there, allocates nothing
+    spares_.chunks.reserve(Spare_chunks::max_spares);
   }
 
   bool empty() const { return size_ == 0; }
