@@ -320,11 +320,12 @@ void sphere_case(benchmark::State& state)
 // search settled on, in turn, `comparison_runs` times each (the fastest of each is kept, see
 // fastest_alternating()): checks that each run of the count mode gives the same points, that the
 // radius mode gives as many, and validates the output (outside the timings). Returns false if a
-// check failed (the case's error is set).
+// check failed (the case's error is set). The first run of each mode measures the heap's peak, the
+// output vector included, as in mesh/.
 struct Count_run
 {
   std::size_t points = 0, runs = 0, stopped_runs = 0;
-  double seconds = 1e300, radius_seconds = 1e300;
+  double seconds = 1e300, radius_seconds = 1e300, peak_heap = 0, radius_peak_heap = 0;
 };
 bool count_and_radius(benchmark::State& state, const Mesh& m, std::size_t n, std::uint64_t seed, Count_run& out,
                       bool report_check_seconds)
@@ -333,14 +334,18 @@ bool count_and_radius(benchmark::State& state, const Mesh& m, std::size_t n, std
   PDS::Sampling_statistics stats;
   for(int r = 0; r < comparison_runs; ++r) {
     std::vector<Point> points, again;
+    const Heap_peak heap;
     auto start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, std::back_inserter(points),
                               PDS::parameters::number_of_points(n).random_seed(seed).statistics(std::ref(stats)));
     out.seconds = (std::min)(out.seconds, seconds_since(start));
+    if(r == 0) out.peak_heap = heap.bytes();
+    const Heap_peak radius_heap;
     start = std::chrono::steady_clock::now();
     PDS::sample_triangle_mesh(m, std::back_inserter(again), PDS::parameters::minimum_distance(stats.minimum_distance)
                                                                 .random_seed(stats.random_seed));
     out.radius_seconds = (std::min)(out.radius_seconds, seconds_since(start));
+    if(r == 0) out.radius_peak_heap = radius_heap.bytes();
     if(again.size() != points.size()) {
       fail(state, "the radius mode at the distance and seed the search settled on gave another number of points");
       return false;
@@ -377,6 +382,9 @@ void count_mode_case(benchmark::State& state, const std::string& name)
   state.counters["seconds"] = run.seconds;
   state.counters["radius_mode_seconds"] = run.radius_seconds;
   state.counters["count_vs_radius"] = run.seconds / run.radius_seconds; // <= 3 is the target
+  const double budget = 200 * double(run.points) + 300 * double(num_faces(m));
+  report_memory(state, run.peak_heap, -1, double(run.points), budget);
+  state.counters["radius_mode_memory_budget_use"] = run.radius_peak_heap / budget;
   if(name.rfind("strips", 0) == 0) {
     double lowest = std::numeric_limits<double>::infinity(), highest = 0;
     for(std::uint64_t seed = 1; seed <= 4; ++seed) {
