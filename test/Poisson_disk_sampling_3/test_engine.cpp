@@ -17,6 +17,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
 #include <gtest/gtest.h>
 
 #include "fragment_checks.h"
@@ -276,6 +277,44 @@ TEST(ActiveFragmentPool, FreeRoomIsBounded)
   }
   // the emptied bins keep their first chunk only where it is the smallest, besides the four spares
   EXPECT_LE(pool.capacity(), 4 * chunk + bins_in_use * 16);
+}
+
+// The square, with samples that count how many of them are alive at once.
+struct Counted_square : pds_test::Square_traits
+{
+  struct Sample
+  {
+    Point point;
+    static inline long live = 0, peak = 0;
+    explicit Sample(const Point& p) : point(p) { up(); }
+    Sample(const Sample& s) : point(s.point) { up(); }
+    Sample& operator=(const Sample&) = default;
+    ~Sample() { --live; }
+    static void up() { peak = (std::max)(peak, ++live); }
+  };
+  template <class Rng> std::optional<Sample> random_sample(const Fragment& f, Rng& rng) const
+  {
+    const auto s = pds_test::Square_traits::random_sample(f, rng);
+    return s ? std::optional<Sample>(Sample(s->point)) : std::nullopt;
+  }
+  const Point& point(const Sample& s) const { return s.point; }
+};
+
+// number_of_points keeps the samples of a run until it ends, in blocks: no more of them alive at once
+// than the run's, the batch's darts and a block (a vector grown by doubling held both its old and its
+// new array while it moved: 32,768 samples for 20,000).
+TEST(Engine, CountModeKeepsOneCopyOfItsSamples)
+{
+  Counted_square::Sample::live = Counted_square::Sample::peak = 0;
+  std::size_t n = 0;
+  PDS::Sampling_statistics stats;
+  PDS::sample_surface(Counted_square(), boost::make_function_output_iterator([&](const Counted_square::Sample&) {
+                        ++n;
+                      }),
+                      PDS::parameters::number_of_points(20000).statistics(std::ref(stats)));
+  EXPECT_NEAR(double(n), 20000, 200);
+  EXPECT_EQ(Counted_square::Sample::live, 0);
+  EXPECT_LE(Counted_square::Sample::peak, long(n) + 256 + 64);
 }
 
 using pds_test::Square_traits;

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -281,11 +282,14 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// from run to run (small targets), the runs draw their darts from other seeds, derived from
 /// `seed`, at a distance that follows their mean count. One to three full runs, more for small
 /// targets and where the first distance is far off (runs stopped at 2n + 64 points). Runs at
-/// `covering_distance` or more return after their first sample, as in `sample_request()`.
+/// `covering_distance` or more return after their first sample, as in `sample_request()`. Each run
+/// keeps its samples in a deque, whose blocks hold about its samples and no more (a vector grown by
+/// doubling held up to three times as many while it moved), and only the run that meets the target
+/// keeps them past its end (the closer runs before it are counted, not kept).
 template <class Traits>
-std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
-                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats,
-                                                   double covering_distance)
+std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
+                                                  std::size_t max_points, bool parallel, Sampling_statistics& stats,
+                                                  double covering_distance)
 {
   CGAL_precondition(n <= max_points); // refused by sample_request()
   const double area = total_area(traits);
@@ -308,8 +312,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
   const double bounded = std::sqrt(area / (4 * double(max_points) + 64)) * std::sqrt(disk_count(1, 1));
   const double lowest = (std::max)(precise, bounded);
   double too_many = 0, too_few = infinity;
-  std::vector<typename Traits::Sample> best;
-  Sampling_statistics best_stats;
+  std::size_t complete_runs = 0, closest = 0; // the count of the complete run closest to n
   // A run stops at `stop` samples, about twice the target, or at the bound: the first distance
   // assumes that a sample covers about pi r^2 of the surface, as in the plane, and on strips far
   // narrower than d, where it covers far less, the first run made 1,267 times the target (12.7
@@ -362,7 +365,7 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
                                  "than that distance (copies, folds), each count in the area that a run's time "
                                  "and memory follow; raise the bound");
     }
-    std::vector<typename Traits::Sample> samples;
+    std::deque<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats,
         [&](const typename Traits::Sample& s) { samples.push_back(s); }, false, stop, d >= covering_distance);
@@ -370,16 +373,10 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
     // a bound at n, taking `stop` would leave the distance of the runs below where it is)
     const double got = complete ? double(samples.size()) : (std::max)(double(stop), 1.05 * double(n));
     if(complete) {
-      if(best.empty() || std::abs(got - double(n)) < std::abs(double(best.size()) - double(n))) {
-        best.swap(samples);
-        best_stats = stats;
-      }
-      if(std::abs(got - double(n)) <= tolerance) {
-        best_stats.number_of_runs = stats.number_of_runs;
-        best_stats.stopped_runs = stopped_runs;
-        stats = best_stats;
-        return best;
-      }
+      if(complete_runs++ == 0 || std::abs(got - double(n)) < std::abs(double(closest) - double(n)))
+        closest = samples.size();
+      // within the tolerance: this run's samples; `stats` holds its statistics and counts the runs
+      if(std::abs(got - double(n)) <= tolerance) return samples;
       // the bracket: the largest distance that gave too many points, the smallest that gave too few
       if(got > double(n)) too_many = (std::max)(too_many, d);
       else too_few = (std::min)(too_few, d);
@@ -432,13 +429,13 @@ std::vector<typename Traits::Sample> run_for_count(const Traits& traits, std::si
       }
     }
   }
-  if(best.empty())
+  if(complete_runs == 0)
     throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points: every run of the search "
                              "made more than " + std::to_string(stop) + (stop == max_points ?
                              " (maximum_number_of_points)" : " (twice the target and 64)") + " and was stopped");
   throw Target_not_reached("no minimum distance gave " + std::to_string(n) + " points within " +
                            number_text(tolerance) + " (1% of them, at least one); the closest had " +
-                           std::to_string(best.size()) + (stopped_runs > 0 ? "; runs stopped at " +
+                           std::to_string(closest) + (stopped_runs > 0 ? "; runs stopped at " +
                            std::to_string(stop) + " points: " + std::to_string(stopped_runs) : std::string()) +
                            ". The count jumps by a few points from one distance to the next: another random_seed "
                            "may reach it");
@@ -459,9 +456,9 @@ Sampling_statistics& clear_statistics(const NamedParameters& np, Sampling_statis
 /// Runs a size request and calls `emit(sample)` for each sample; fills `stats`, the `statistics`
 /// parameter or a local object, which the caller has cleared (`clear_statistics()`). A radius request
 /// streams the samples as they are accepted (no copy of the set is kept); a `number_of_points` request
-/// keeps the best run's samples until the search ends. Runs at `covering_distance` or more, at which
-/// any sample covers the whole surface (a sphere's diameter), return after their first sample (see
-/// `Dart_throwing_engine::set_first_sample_only()`).
+/// keeps each run's samples until the run ends, and the last run's until they are emitted. Runs at
+/// `covering_distance` or more, at which any sample covers the whole surface (a sphere's diameter),
+/// return after their first sample (see `Dart_throwing_engine::set_first_sample_only()`).
 template <class Traits, class NamedParameters, class Emit>
 void sample_request(const Traits& traits, const NamedParameters& np, Sampling_statistics& stats, Emit&& emit,
                     double covering_distance = std::numeric_limits<double>::infinity())
