@@ -355,8 +355,9 @@ struct Counting_triangles : PDS::Triangle_fragment_traits_3
 // area, after bounded work: at most 8 times the coverage tests that prove the same set maximal at its
 // own distance (4.2 times; once a gap is proven, a piece of leaf size that no ball holds counts
 // whole, and refining such pieces across the balls' boundaries took 20 times, more where the gaps'
-// boundaries are longer). Its bound is above the area that a dense sample of the surface finds
-// uncovered, and below the surface's.
+// boundaries are longer). The work after a proven gap is bounded by a fixed budget, not by the
+// samples, so that the ratio is a property of this size (at 5,000 points it is 14). Its bound is above
+// the area that a dense sample of the surface finds uncovered, and below the surface's.
 TEST(IsMaximal, FarFromMaximalIsAnsweredAfterBoundedWork)
 {
   const Mesh m = load_mesh("lion.off");

@@ -512,8 +512,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
 ///       has N points within 1% (at least one point), in one to three full runs, more for small targets
 ///       and for surfaces where a sample covers far less than pi r^2 (strips much narrower than the
-///       distance); a run stops at 2N + 64 points or the bound, so that the samples held stay about 4N
-///       (the closest run kept, and the next). The runs' fragments, time and memory follow area / (pi
+///       distance); a run stops at 2N + 64 points or the bound, so that the samples held stay at most
+///       2N + 64 (one run's: no earlier run's are kept). The runs' fragments, time and memory follow area / (pi
 ///       r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than
 ///       r, many times N where faces overlap or lie closer than r (copies of a face each count). The
 ///       search tries no distance at which it exceeds four times `maximum_number_of_points`, and 64,
