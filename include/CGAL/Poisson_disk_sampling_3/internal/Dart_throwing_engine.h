@@ -524,23 +524,26 @@ private:
   typedef Active_fragment_pool<Item> Pool;
 
   // the state of a dart through the stages of a batch
+  // Every stage sets what the next one reads, but the darts that pass the rejection steps are moved
+  // to the front of the batch whole, fields not yet set included: each field has a value from the
+  // start (copying an indeterminate bool is undefined, and where `Sample` is not trivially copyable
+  // the copy reads each field; resize() constructs darts only when a batch is larger than the last).
   struct Dart
   {
-    Dart() {} // every stage sets what the next one reads: no zeroing on each batch's resize()
-    typename Pool::Handle handle;
-    double u;                       // for the pool's rejection step
-    std::uint64_t stream;           // the seed of the dart's own generator
-    bool thrown;                    // passed the rejection steps: a dart
-    Item item;
+    typename Pool::Handle handle{};
+    double u = 0;                   // for the pool's rejection step
+    std::uint64_t stream = 0;       // the seed of the dart's own generator
+    bool thrown = false;            // passed the rejection steps: a dart
+    Item item{};
     std::optional<Sample> sample;
-    Point_d point;
-    Neighbor_buckets::Cell cell;
-    const std::vector<Point_d>* bucket;
-    bool free;                      // at distance >= D from the samples before the batch
-    std::size_t batch_coverer;      // in `accepted`: its own sample or the first within D, else none
-    bool accepted;
-    bool taken;                     // the first dart of the batch on its fragment
-    bool covered;                   // refine() found its fragment covered
+    Point_d point{};
+    Neighbor_buckets::Cell cell{};
+    const std::vector<Point_d>* bucket = nullptr;
+    bool free = false;              // at distance >= D from the samples before the batch
+    std::size_t batch_coverer = 0;  // in `accepted`: its own sample or the first within D, else none
+    bool accepted = false;
+    bool taken = false;             // the first dart of the batch on its fragment
+    bool covered = false;           // refine() found its fragment covered
   };
 
   // Darts per batch, at most. Large enough that a batch's cache misses overlap, small enough that what
