@@ -476,26 +476,40 @@ TEST(Engine, ThreadsThrowTheSequentialRunsException)
   }
 }
 
-// set_first_sample_only(): the run returns after its first sample, which is the one a full run accepts
-// first for the same seed (sample_sphere() uses it from the diameter up), in parallel mode too.
-TEST(Engine, FirstSampleOnlyIsTheFullRunsFirstSample)
+// set_first_sample_stop(): the run returns after its first sample where the check says that sample
+// holds the surface, and that sample is the one a full run accepts first for the same seed; where the
+// check says no, the run is the full run (sample_sphere() uses it from the diameter up). In parallel
+// mode too.
+TEST(Engine, FirstSampleStopKeepsTheFullRunsSamples)
 {
   const Square_traits square(true); // refusing half of its darts: the first sample may come from a later one
   for(std::uint64_t seed : {0, 1, 2, 3, 4}) {
     std::vector<Square_traits::Point> full, first;
     PDS::internal::Dart_throwing_engine<Square_traits> whole(square, 0.05, seed, 10000);
     whole.run(pds_test::Point_collector{&full});
-    for(bool parallel : {false, true}) {
-      first.clear();
-      PDS::internal::Dart_throwing_engine<Square_traits> engine(square, 0.05, seed, 10000);
-      engine.set_first_sample_only(true);
-      engine.set_parallel(parallel);
-      const auto statistics = engine.run(pds_test::Point_collector{&first});
-      ASSERT_EQ(first.size(), 1u) << seed;
-      EXPECT_EQ(statistics.samples, 1u);
-      EXPECT_FALSE(statistics.stopped);
-      EXPECT_EQ(first[0], full.at(0)) << seed << " " << parallel;
-    }
+    ASSERT_GT(full.size(), 100u);
+    for(bool parallel : {false, true})
+      for(bool holds : {true, false}) {
+        first.clear();
+        PDS::internal::Dart_throwing_engine<Square_traits> engine(square, 0.05, seed, 10000);
+        int checks = 0;
+        engine.set_first_sample_stop([&](const Square_traits::Sample& s) {
+          ++checks;
+          EXPECT_EQ(s.point, full.at(0));
+          return holds;
+        });
+        engine.set_parallel(parallel);
+        const auto statistics = engine.run(pds_test::Point_collector{&first});
+        EXPECT_EQ(checks, 1) << seed; // the first sample only
+        EXPECT_FALSE(statistics.stopped);
+        if(holds) {
+          ASSERT_EQ(first.size(), 1u) << seed;
+          EXPECT_EQ(statistics.samples, 1u);
+          EXPECT_EQ(first[0], full.at(0)) << seed << " " << parallel;
+        } else {
+          EXPECT_EQ(first, full) << seed << " " << parallel;
+        }
+      }
   }
 }
 

@@ -165,6 +165,34 @@ TEST(SphereSampling, DiameterAndBeyondGiveOnePoint)
   expect_maximal_poisson_disk_set(unit, points, std::nextafter(2., 0.));
 }
 
+// Far from the origin, a sample is the sphere's point rounded to the centre's unit in the last place
+// (1.5 10^-8 at 10^8), far more than R's: up to that much outside the sphere, its ball of radius d
+// leaves a cap around the antipode out from d = 2R up to about 2R + 1.5 10^-8. sample_sphere()
+// returned that one point all the same (at 10^8, d = 2 (1 + 10^-9): 12 seeds of 20 left a cap, and
+// is_maximal() could not certify them); the run now goes on and fills the cap, and every result is
+// certified maximal. Where the first sample's ball holds the sphere, one point, as before.
+TEST(SphereSampling, DiameterFarFromTheOriginLeavesNoGap)
+{
+  for(const Case& c : {Case{{1e8, 1e8, 1e8}, 1, 2 * (1 + 1e-9), 0}, Case{{1e8, -1e8, 1e8}, 1, 2 * (1 + 1e-14), 0},
+                       Case{{1e6, 1e6, 1e6}, 1, 2 * (1 + 1e-12), 0}}) {
+    const K::Sphere_3 sphere(c.center, c.radius * c.radius);
+    std::size_t two_or_more = 0;
+    for(unsigned seed = 0; seed < 10; ++seed) {
+      std::vector<Point> points;
+      PDS::Sampling_statistics stats;
+      PDS::sample_sphere(sphere, std::back_inserter(points),
+                         PDS::parameters::minimum_distance(c.d).random_seed(seed).statistics(std::ref(stats)));
+      ASSERT_GE(points.size(), 1u);
+      EXPECT_EQ(stats.number_of_runs, 1u);
+      two_or_more += points.size() >= 2;
+      expect_maximal_poisson_disk_set(sphere, points, c.d);
+    }
+    // the case the fix is for happens (a cap left out of the first sample's ball), and not always
+    EXPECT_GT(two_or_more, 0u) << c.center;
+    EXPECT_LT(two_or_more, 10u) << c.center;
+  }
+}
+
 // The sphere's model, counting the pieces the certificate splits, and stopping it with an exception
 // beyond a million (so that the code before the test's fix fails it in seconds, not minutes).
 struct Counting_sphere : Traits

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -246,22 +247,28 @@ constexpr bool read_parallel()
   return std::is_same<Tag, CGAL::Parallel_tag>::value;
 }
 
+/// Whether one sample covers the whole surface at a minimum distance: `holds_surface(sample, d)`;
+/// empty where no sample is ever taken to (the engine then proves coverage itself).
+template <class Traits>
+using Holds_surface = std::function<bool(const typename Traits::Sample&, double)>;
+
 /// one dart-throwing run; `emit(sample)` is called for each sample as it is accepted. With
 /// `check_expected_count` false, the run does not refuse the distance up front (see
 /// `Dart_throwing_engine::set_expected_count_check()`). Returns false if the run stopped at
-/// `sample_stop` samples, not maximal (see `Dart_throwing_engine::set_sample_stop()`). With
-/// `first_sample_only`, the run returns after its first sample (see
-/// `Dart_throwing_engine::set_first_sample_only()`).
+/// `sample_stop` samples, not maximal (see `Dart_throwing_engine::set_sample_stop()`). Where
+/// `holds_surface(sample, d)` is true of its first sample, the run returns after it (see
+/// `Dart_throwing_engine::set_first_sample_stop()`).
 template <class Traits, class Emit>
 bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t max_points, bool parallel,
                 Sampling_statistics& stats, Emit&& emit, bool check_expected_count = true,
-                std::size_t sample_stop = std::size_t(-1), bool first_sample_only = false)
+                std::size_t sample_stop = std::size_t(-1), const Holds_surface<Traits>& holds_surface = {})
 {
   Dart_throwing_engine<Traits> engine(traits, d, seed, max_points);
   engine.set_expected_count_check(check_expected_count);
   engine.set_parallel(parallel);
   engine.set_sample_stop(sample_stop);
-  engine.set_first_sample_only(first_sample_only);
+  if(holds_surface)
+    engine.set_first_sample_stop([&holds_surface, d](const typename Traits::Sample& s) { return holds_surface(s, d); });
   // filled first: a run that throws (Point_limit_exceeded) leaves its distance and the runs counted
   stats.minimum_distance = d;
   stats.random_seed = seed;
@@ -282,14 +289,15 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// from run to run (small targets), the runs draw their darts from other seeds, derived from
 /// `seed`, at a distance that follows their mean count. One to three full runs, more for small
 /// targets and where the first distance is far off (runs stopped at 2n + 64 points). Runs at
-/// `covering_distance` or more return after their first sample, as in `sample_request()`. Each run
+/// return after their first sample where `holds_surface` says it covers the surface, as in
+/// `sample_request()`. Each run
 /// keeps its samples in a deque, whose blocks hold about its samples and no more (a vector grown by
 /// doubling held up to three times as many while it moved), and only the run that meets the target
 /// keeps them past its end (the closer runs before it are counted, not kept).
 template <class Traits>
 std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats,
-                                                  double covering_distance)
+                                                  const Holds_surface<Traits>& holds_surface)
 {
   CGAL_precondition(n <= max_points); // refused by sample_request()
   const double area = total_area(traits);
@@ -368,7 +376,7 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
     std::deque<typename Traits::Sample> samples;
     const bool complete = run_engine(
         traits, d, run_seed, max_points, parallel, stats,
-        [&](const typename Traits::Sample& s) { samples.push_back(s); }, false, stop, d >= covering_distance);
+        [&](const typename Traits::Sample& s) { samples.push_back(s); }, false, stop, holds_surface);
     // a stopped run made more than `stop` points, at least 5% more than n (`stop` is at least n; with
     // a bound at n, taking `stop` would leave the distance of the runs below where it is)
     const double got = complete ? double(samples.size()) : (std::max)(double(stop), 1.05 * double(n));
@@ -456,12 +464,13 @@ Sampling_statistics& clear_statistics(const NamedParameters& np, Sampling_statis
 /// Runs a size request and calls `emit(sample)` for each sample; fills `stats`, the `statistics`
 /// parameter or a local object, which the caller has cleared (`clear_statistics()`). A radius request
 /// streams the samples as they are accepted (no copy of the set is kept); a `number_of_points` request
-/// keeps each run's samples until the run ends, and the last run's until they are emitted. Runs at
-/// `covering_distance` or more, at which any sample covers the whole surface (a sphere's diameter),
-/// return after their first sample (see `Dart_throwing_engine::set_first_sample_only()`).
+/// keeps each run's samples until the run ends, and the last run's until they are emitted. A run
+/// whose first sample `holds_surface(sample, d)` says covers the whole surface at its distance d
+/// (where the coverage tests may not prove it: a sphere at its diameter or more) returns after it
+/// (see `Dart_throwing_engine::set_first_sample_stop()`).
 template <class Traits, class NamedParameters, class Emit>
 void sample_request(const Traits& traits, const NamedParameters& np, Sampling_statistics& stats, Emit&& emit,
-                    double covering_distance = std::numeric_limits<double>::infinity())
+                    const Holds_surface<Traits>& holds_surface = {})
 {
   const Size_request size = read_size(np);
   const std::uint64_t seed = read_seed(np);
@@ -473,12 +482,12 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
                                  std::to_string(std::uint64_t(size.count_given)) : number_text(size.count_given)) +
                                  ") exceeds maximum_number_of_points (" + std::to_string(max_points) + ")");
     for(const auto& s : run_for_count(traits, size.number_of_points, seed, max_points, parallel, stats,
-                                      covering_distance))
+                                      holds_surface))
       emit(s);
     return;
   }
   run_engine(traits, size.minimum_distance, seed, max_points, parallel, stats, emit, true, std::size_t(-1),
-             size.minimum_distance >= covering_distance);
+             holds_surface);
 }
 
 } // namespace internal
@@ -487,7 +496,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 /// Generates a maximal Poisson-disk sample set on the surface described by `traits`, by the optimized
 /// dart throwing of the paper's Section 3. Every other sampling function of the package is a facade
 /// over this one (but `sample_sphere()` at a distance of its diameter or more stops after the first
-/// sample, where this function, with the sphere's model, runs in full: see there).
+/// sample where that sample's ball holds the sphere, where this function, with the sphere's model,
+/// runs in full: see there).
 ///
 /// @tparam SurfaceFragmentTraits a model of `SurfaceFragmentTraits_3`
 /// @tparam SampleOutputIterator an output iterator accepting `SurfaceFragmentTraits::Sample`

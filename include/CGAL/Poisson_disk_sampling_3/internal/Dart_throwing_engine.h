@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <iterator>
 #include <optional>
 #include <string>
@@ -209,11 +210,15 @@ public:
   /// search uses it to cut short a run that makes far more samples than it looks for.
   void set_sample_stop(std::size_t samples) { sample_stop_ = samples; }
 
-  /// Makes `run()` return once it has accepted its first sample (by default, no): for a distance at
-  /// which any sample covers the whole surface, where the coverage tests cannot always prove it (on a
-  /// sphere at its diameter or more, the antipode is 2R away: see sample_sphere.h). The sample is the
-  /// one a full run accepts first for the same seed.
-  void set_first_sample_only(bool first_only) { first_sample_only_ = first_only; }
+  /// Makes `run()` return once it has accepted its first sample if `holds_surface(sample)` is true
+  /// (by default, never): for a distance at which one sample may cover the whole surface, where the
+  /// coverage tests cannot always prove it (on a sphere at its diameter or more, the antipode is
+  /// about 2R away: see sample_sphere.h). Where it is false, the run goes on. Either way the samples
+  /// are those a full run accepts for the same seed, as far as the run goes.
+  void set_first_sample_stop(std::function<bool(const Sample&)> holds_surface)
+  {
+    first_sample_stop_ = std::move(holds_surface);
+  }
 
   /// Throws darts until the surface is covered; calls `output(sample)` for each accepted sample.
   template <class SampleOutput>
@@ -420,7 +425,7 @@ public:
         d.accepted = true;
         ++stats.samples;
         output(*d.sample);
-        if(first_sample_only_) return stats;
+        if(stats.samples == 1 && first_sample_stop_ && first_sample_stop_(*d.sample)) return stats;
       }
       // nothing reads the buckets again before the next batch: the batch's samples go in together
       clock.lap(stats.stage_seconds[accept_stage]);
@@ -779,7 +784,7 @@ private:
   double coordinate_limit_;    // of a sample's coordinates, see refuse_sample_at()
   std::uint64_t refusal_limit_ = std::uint64_t(1) << 30;
   std::size_t sample_stop_ = std::size_t(-1);
-  bool first_sample_only_ = false;
+  std::function<bool(const Sample&)> first_sample_stop_;
 };
 
 } // inline namespace CGAL_POISSON_DISK_SAMPLING_3_ENGINE_VARIANT
