@@ -350,6 +350,37 @@ struct Counting_triangles : PDS::Triangle_fragment_traits_3
   }
 };
 
+// A dense set checked at a distance far above its spacing (a unit mistaken, or a set sampled at a finer
+// distance), so that every sample is within reach of every piece: the first ball tested holds each
+// face, and the decision stops there. It went on through every sample in reach, and checking 2.5
+// million samples of lion.off at its size took 107 s, 14,859 faces times 2.5 million samples; here
+// 20,000 samples at 50 times their distance, which the code before tested 92 million times (19,000
+// now; 1.04 million and 777,000 at their own distance).
+TEST(IsMaximal, DenseSetAtALargeDistanceStopsAtTheFirstBall)
+{
+  const Mesh m = load_mesh("lion.off");
+  const double d = distance_for(CGAL::Polygon_mesh_processing::area(m), 20000);
+  std::vector<Point> points;
+  PDS::sample_triangle_mesh(m, std::back_inserter(points), PDS::parameters::minimum_distance(d));
+  std::vector<Mesh::Face_index> face_of;
+  const auto traits = PDS::internal::triangles_of_mesh(m, CGAL::parameters::default_values(), face_of);
+  std::vector<double> xyz;
+  for(const Point& p : points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  std::size_t tested[2];
+  for(int i : {0, 1}) {
+    const double at = i == 0 ? d : 50 * d;
+    const PDS::internal::Point_hash_grid grid = PDS::internal::grid_of(xyz, at);
+    const auto certificate = PDS::internal::certify_coverage(traits, grid, at);
+    EXPECT_TRUE(certificate.maximal) << at;
+    tested[i] = certificate.samples_tested;
+  }
+  // fewer samples tested than the proof at the set's own distance, where pieces are small and balls
+  // barely hold them: not every one in reach (20,000 per face at 50 d)
+  EXPECT_LE(tested[1], tested[0]);
+  std::printf("samples tested at d: %zu, at 50 d: %zu\n", tested[0], tested[1]);
+  EXPECT_TRUE(PDS::is_maximal(m, points, 50 * d));
+}
+
 // A set far from maximal for the distance asked (lion.off sampled at about 20,000 points, checked at
 // half their distance): the certificate answers with a proven gap and an upper bound of the uncovered
 // area, after bounded work: at most 8 times the coverage tests that prove the same set maximal at its

@@ -28,6 +28,7 @@ struct Certificate
   bool has_witness = false;    // a point within the position error of a surface point farther than D
                                // from every sample
   std::array<double, 3> witness{{0, 0, 0}};
+  std::size_t samples_tested = 0; // samples within reach of a piece that a decision tested
 };
 
 /// Proves that every point of the surface lies within distance D of some sample, or measures where
@@ -67,7 +68,6 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   Certificate result;
   Point_hash_grid::Nearby_queries near_samples(samples);
   std::vector<Fragment> children;
-  std::vector<const double*> near;
   // A reference point is computed: it lies within the model's position error of the surface point
   // it stands for, not on it. A gap is proven where no sample is within d plus twice that error (the
   // error bounds each coordinate; the next double above the sum makes up for its rounding), so that
@@ -92,20 +92,21 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
   auto decide = [&](const Item& item) {
     ++decisions;
     const std::array<double, 3> ref = traits.reference_point(item.fragment);
-    near.clear();
     bool ref_near = false; // a sample within d_gap of the reference point: no gap proven there
+    bool covered = false;
     ref_at_d = true;
+    // the samples in reach, until one's ball holds the piece
     near_samples.for_each_near(ref.data(), d_gap, [&](Point_hash_grid::Index, const double* q) {
       const double dx = q[0] - ref[0], dy = q[1] - ref[1], dz = q[2] - ref[2];
       const double d2 = dx * dx + dy * dy + dz * dz;
-      if(d2 > d2_near) return;
+      if(d2 > d2_near) return false;
+      ++tests;
+      if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) return covered = true;
       if(d2 < d2_at_d) ref_at_d = false;
-      near.push_back(q);
       if(!ref_near && compare_distance_exact(ref.data(), q, d_gap) != CGAL::LARGER) ref_near = true;
+      return false;
     });
-    tests += near.size();
-    for(const double* q : near)
-      if(traits.is_covered(item.fragment, std::array<double, 3>{{q[0], q[1], q[2]}}, d)) return COVERED;
+    if(covered) return COVERED;
     if(ref_near) return SPLIT;
     result.maximal = false;
     if(!result.has_witness) {
@@ -224,6 +225,7 @@ Certificate certify_coverage(const Traits& traits, const Point_hash_grid& sample
     if(!deeper && !filling) break;
   }
   for(const Item& item : waiting) not_proven(item);
+  result.samples_tested = tests;
   return result;
 }
 

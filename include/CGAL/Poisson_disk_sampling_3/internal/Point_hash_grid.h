@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -122,7 +123,11 @@ public:
   public:
     explicit Nearby_queries(const Point_hash_grid& grid) : grid_(grid) {}
 
-    /// as `Point_hash_grid::for_each_near()`
+    /// as `Point_hash_grid::for_each_near()`; where `f` returns a `bool`, the query stops at the first
+    /// point for which it returns true (the certificate stops at the first ball that holds a piece:
+    /// checked at a distance far above the samples' spacing, each piece has millions of samples
+    /// within reach, and it took 107 s on 2.5 million samples of lion.off where the first one tested
+    /// settles each face)
     template <class F>
     void for_each_near(const double* p, double radius, F&& f)
     {
@@ -135,7 +140,14 @@ public:
         std::copy(box, box + 6, box_);
         valid_ = true;
       }
-      for(const auto& r : ranges_) grid_.visit(r.first, r.second, f);
+      for(const auto& r : ranges_)
+        for(std::size_t k = r.first; k < r.second; ++k) {
+          if constexpr(std::is_same<decltype(f(Index(), static_cast<const double*>(nullptr))), bool>::value) {
+            if(f(grid_.index_[k], &grid_.points_[3 * k])) return;
+          } else {
+            f(grid_.index_[k], &grid_.points_[3 * k]);
+          }
+        }
     }
 
   private:
