@@ -166,8 +166,8 @@ TEST(SphereSampling, DiameterAndBeyondGiveOnePoint)
 }
 
 // Far from the origin, a sample is the sphere's point rounded to the centre's unit in the last place
-// (1.5 10^-8 at 10^8), far more than R's: up to that much outside the sphere, its ball of radius d
-// leaves a cap around the antipode out from d = 2R up to about 2R + 1.5 10^-8. sample_sphere()
+// (7.5 10^-9 a coordinate at 10^8), far more than R's: up to that much outside the sphere, its ball of radius d
+// leaves a cap around the antipode out from d = 2R up to about 2R + 1.3 10^-8. sample_sphere()
 // returned that one point all the same (at 10^8, d = 2 (1 + 10^-9): 12 seeds of 20 left a cap, and
 // is_maximal() could not certify them); the run now goes on and fills the cap, and every result is
 // certified maximal. Where the first sample's ball holds the sphere, one point, as before.
@@ -185,6 +185,10 @@ TEST(SphereSampling, DiameterFarFromTheOriginLeavesNoGap)
       ASSERT_GE(points.size(), 1u);
       EXPECT_EQ(stats.number_of_runs, 1u);
       two_or_more += points.size() >= 2;
+      // one point exactly where its ball holds the sphere (up to 2^-48 R), decided by exact arithmetic
+      const std::array<double, 3> p{{points[0].x(), points[0].y(), points[0].z()}};
+      EXPECT_EQ(points.size() == 1,
+                PDS::internal::one_sample_holds_sphere(PDS::internal::sphere_traits(sphere), p, c.d)) << seed;
       expect_maximal_poisson_disk_set(sphere, points, c.d);
     }
     // the case the fix is for happens (a cap left out of the first sample's ball), and not always

@@ -374,9 +374,9 @@ TEST(IsMaximal, DenseSetAtALargeDistanceStopsAtTheFirstBall)
     EXPECT_TRUE(certificate.maximal) << at;
     tested[i] = certificate.samples_tested;
   }
-  // fewer samples tested than the proof at the set's own distance, where pieces are small and balls
-  // barely hold them: not every one in reach (20,000 per face at 50 d)
-  EXPECT_LE(tested[1], tested[0]);
+  // a tenth of the samples tested by the proof at the set's own distance, where pieces are small and
+  // balls barely hold them, or fewer: not every one in reach (20,000 per face at 50 d)
+  EXPECT_LE(10 * tested[1], tested[0]);
   std::printf("samples tested at d: %zu, at 50 d: %zu\n", tested[0], tested[1]);
   EXPECT_TRUE(PDS::is_maximal(m, points, 50 * d));
 }

@@ -288,8 +288,8 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 /// leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
 /// from run to run (small targets), the runs draw their darts from other seeds, derived from
 /// `seed`, at a distance that follows their mean count. One to three full runs, more for small
-/// targets and where the first distance is far off (runs stopped at 2n + 64 points). Runs at
-/// return after their first sample where `holds_surface` says it covers the surface, as in
+/// targets and where the first distance is far off (runs stopped at 2n + 64 points). Runs return
+/// after their first sample where `holds_surface` says it covers the surface, as in
 /// `sample_request()`. Each run
 /// keeps its samples in a deque, whose blocks hold about its samples and no more (a vector grown by
 /// doubling held up to three times as many while it moved), and only the run that meets the target
