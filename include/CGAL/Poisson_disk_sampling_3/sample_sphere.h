@@ -38,7 +38,8 @@ Sphere_fragment_traits_3 sphere_traits(const CGAL::Sphere_3<K>& sphere)
 /// |p - c| + R away, and the test is |p - c| + R <= d + 2^-48 R, exact. Samples are the sphere's
 /// points rounded to doubles, so |p - c| is R within that rounding: about 2^-52 R near the origin,
 /// but half a unit in the last place of the centre's coordinates far from it (7.5 10^-9 a coordinate
-/// at 10^8, up to about 1.3 10^-8 in all), which leaves a cap of the sphere farther than d from p, a gap, at distances well above 2R.
+/// at 10^8, up to about 1.3 10^-8 in all), which leaves a cap of the sphere farther than d from p,
+/// a gap, at distances well above 2R.
 inline bool one_sample_holds_sphere(const Sphere_fragment_traits_3& traits, const Sphere_fragment_traits_3::Point& p,
                                     double d)
 {
@@ -70,8 +71,9 @@ inline bool one_sample_holds_sphere(const Sphere_fragment_traits_3& traits, cons
 ///        `sample_surface()`
 ///
 /// A minimum distance of the diameter 2R or more gives one uniform point, or more far from the origin
-/// (below): every point of the sphere is within 2R of it. Up to about 2R (1 + 2 10^-15), the antipode's distance 2R is within the
-/// rounding of d, and `is_maximal()` answers such a set undecided. (From 2R up, `sample_sphere()`
+/// (below): every point of the sphere is within 2R of it. Up to about 2R (1 + 2 10^-15), the
+/// antipode's distance 2R is within the rounding of d, and `is_maximal()` answers such a set
+/// undecided. (From 2R up, `sample_sphere()`
 /// stops the engine after its first sample p if the farthest point of the sphere, |p - c| + R away,
 /// is at most d + 2^-48 R away, decided exactly, without the engine's coverage tests;
 /// `sample_surface()` with the sphere's model does not, and from 2R to about 2R (1 + 2 10^-15) it
