@@ -46,8 +46,8 @@ namespace internal {
 
 /// the points of `xyz` (three coordinates each) with each copy of a point but one left out, in
 /// lexicographic order: each sample is tested wherever it reaches (until one's ball holds the piece),
-/// and copies would only repeat the
-/// tests (10,000 copies of one point on 20 copies of a face took 22 s to certify). O(n log n).
+/// and copies would only repeat the tests (10,000 copies of one point on 20 copies of a face took 22 s
+/// to certify). O(n log n).
 inline std::vector<double> distinct_coordinates(std::vector<double> xyz)
 {
   std::vector<std::array<double, 3>> points(xyz.size() / 3);
