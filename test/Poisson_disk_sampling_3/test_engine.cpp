@@ -1672,6 +1672,25 @@ TEST(NeighborBuckets, BucketHoldsEveryNeighbor)
   }
 }
 
+// A bucket has room for as many copies as it holds while it holds one or two: where samples lie far
+// apart, most buckets hold one copy, and room for four took four times the memory.
+TEST(NeighborBuckets, SmallBucketsHaveNoFreeRoom)
+{
+  const double reach = 0.05;
+  PDS::internal::Neighbor_buckets buckets(reach, 4, 10);
+  // in the middle of the cell [0, 0.2)^3 (side 4 reach), so each point is copied into that cell alone
+  const std::array<double, 3> a{{0.1, 0.1, 0.1}}, b{{0.11, 0.1, 0.1}}, c{{0.1, 0.11, 0.1}};
+  buckets.insert(a);
+  ASSERT_NE(buckets.bucket(a), nullptr);
+  EXPECT_EQ(buckets.bucket(a)->size(), 1u);
+  EXPECT_EQ(buckets.bucket(a)->capacity(), 1u);
+  buckets.insert(b);
+  EXPECT_EQ(buckets.bucket(a)->capacity(), 2u);
+  buckets.insert(c);
+  EXPECT_EQ(buckets.bucket(a)->size(), 3u);
+  EXPECT_EQ(buckets.bucket(a)->capacity(), 4u);
+}
+
 // Inserting points in batches makes the same buckets, in the same order, as inserting them one by one.
 TEST(NeighborBuckets, BatchInsertionIsOneByOne)
 {
