@@ -289,6 +289,32 @@ TEST(PointHashGrid, FindsEveryPointNearAQuery)
   }
 }
 
+// Both queries stop at the first point for which a callback that returns a bool returns true, after
+// as many calls as that point's place in the query's order; a callback that returns nothing sees them all.
+TEST(PointHashGrid, QueriesStopWhereTheCallbackSaysSo)
+{
+  PDS::internal::Random rng(11);
+  std::vector<double> xyz;
+  for(int i = 0; i < 3 * 2000; ++i) xyz.push_back(4 * rng.uniform() - 2);
+  const PDS::internal::Point_hash_grid grid(1, xyz.data(), 2000);
+  PDS::internal::Point_hash_grid::Nearby_queries nearby(grid);
+  const double p[3] = {0.1, -0.2, 0.3};
+  for(int pass = 0; pass < 2; ++pass) {
+    auto query = [&](auto&& f) {
+      if(pass == 0) grid.for_each_near(p, 1, f);
+      else nearby.for_each_near(p, 1, f);
+    };
+    std::vector<PDS::internal::Point_hash_grid::Index> all;
+    query([&](PDS::internal::Point_hash_grid::Index i, const double*) { all.push_back(i); });
+    ASSERT_GT(all.size(), 100u) << pass;
+    for(const std::size_t stop : {std::size_t(0), all.size() / 2, all.size() - 1}) {
+      std::size_t calls = 0;
+      query([&](PDS::internal::Point_hash_grid::Index i, const double*) { return ++calls, i == all[stop]; });
+      EXPECT_EQ(calls, stop + 1) << pass;
+    }
+  }
+}
+
 TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)
 {
   const Mesh m = load_mesh("elephant.off");

@@ -104,14 +104,19 @@ public:
   /// calls `f(index, point)` for every point at distance <= `radius` from `p`, and maybe a few more,
   /// `point` pointing into the grid's own copy (so that two of them compare as their positions in
   /// the grid's order). The query box is widened by more than the rounding error of its corners, so
-  /// none is missed.
+  /// none is missed. Where `f` returns a `bool`, the query stops at the first point for which it
+  /// returns true.
   /// \throws Invalid_input (from `grid_cell()`) if |coordinate| + radius reaches 2^62 cells
   template <class F>
   void for_each_near(const double* p, double radius, F&& f) const
   {
     std::int64_t box[6];
     cell_box(p, radius, box);
-    for_each_cell(box, [&](std::size_t first, std::size_t last) { visit(first, last, f); });
+    for_each_cell(box, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
+        if(stops(f, index_[k], &points_[3 * k])) return true;
+      return false;
+    });
   }
 
   /// Queries that follow each other closely, as the pieces of a surface split depth first: a query
@@ -123,8 +128,8 @@ public:
   public:
     explicit Nearby_queries(const Point_hash_grid& grid) : grid_(grid) {}
 
-    /// as `Point_hash_grid::for_each_near()`; where `f` returns a `bool`, the query stops at the first
-    /// point for which it returns true (the certificate stops at the first ball that holds a piece:
+    /// as `Point_hash_grid::for_each_near()`, which stops at the first point for which `f` returns
+    /// true where it returns a `bool` (the certificate stops at the first ball that holds a piece:
     /// checked at a distance far above the samples' spacing, each piece has millions of samples
     /// within reach, and it took 107 s on 2.5 million samples of lion.off where the first one tested
     /// settles each face)
@@ -136,18 +141,16 @@ public:
       if(!valid_ || !std::equal(box, box + 6, box_)) {
         valid_ = false; // until the ranges are complete (push_back may throw)
         ranges_.clear();
-        grid_.for_each_cell(box, [&](std::size_t first, std::size_t last) { ranges_.push_back({first, last}); });
+        grid_.for_each_cell(box, [&](std::size_t first, std::size_t last) {
+          ranges_.push_back({first, last});
+          return false;
+        });
         std::copy(box, box + 6, box_);
         valid_ = true;
       }
       for(const auto& r : ranges_)
-        for(std::size_t k = r.first; k < r.second; ++k) {
-          if constexpr(std::is_same<decltype(f(Index(), static_cast<const double*>(nullptr))), bool>::value) {
-            if(f(grid_.index_[k], &grid_.points_[3 * k])) return;
-          } else {
-            f(grid_.index_[k], &grid_.points_[3 * k]);
-          }
-        }
+        for(std::size_t k = r.first; k < r.second; ++k)
+          if(stops(f, grid_.index_[k], &grid_.points_[3 * k])) return;
     }
 
   private:
@@ -171,7 +174,8 @@ private:
     }
   }
 
-  // calls f(first, last) for the range of points of each non-empty cell of the box
+  // calls f(first, last) for the range of points of each non-empty cell of the box; stops where a
+  // call returns true
   template <class F>
   void for_each_cell(const std::int64_t* box, F&& f) const
   {
@@ -179,15 +183,20 @@ private:
       for(std::int64_t y = box[2]; y <= box[3]; ++y)
         for(std::int64_t z = box[4]; z <= box[5]; ++z) {
           const std::uint32_t c = cells_.find(x, y, z);
-          if(c != Cell_hash_table::none) f(std::size_t(begin_[c]), std::size_t(begin_[c + 1]));
+          if(c != Cell_hash_table::none && f(std::size_t(begin_[c]), std::size_t(begin_[c + 1]))) return;
         }
   }
 
-  // calls f(index, point) for the points first to last - 1 in the grid's order
+  // calls f(i, q); whether the query stops there: what f returns where it returns a bool, else false
   template <class F>
-  void visit(std::size_t first, std::size_t last, F& f) const
+  static bool stops(F& f, Index i, const double* q)
   {
-    for(std::size_t k = first; k < last; ++k) f(index_[k], &points_[3 * k]);
+    if constexpr(std::is_same<decltype(f(i, q)), bool>::value) {
+      return f(i, q);
+    } else {
+      f(i, q);
+      return false;
+    }
   }
 
   double inv_cell_;
