@@ -7,6 +7,7 @@
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
 #include <CGAL/Poisson_disk_sampling_3/parameters.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Dart_throwing_engine.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/count_estimate.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/exact_distance.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -281,19 +282,19 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   return !e.stopped;
 }
 
-/// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run
-/// uses the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2
-/// points); later runs correct d with the slope of log(count) over log(d) measured between runs,
-/// and bisect the bracket of distances that gave too many and too few points when a step would
-/// leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
-/// from run to run (small targets), the runs draw their darts from other seeds, derived from
-/// `seed`, at a distance that follows their mean count. One to three full runs, more for small
-/// targets and where the first distance is far off (runs stopped at 2n + 64 points). Runs return
-/// after their first sample where `holds_surface` says it covers the surface, as in
-/// `sample_request()`. Each run
-/// keeps its samples in a deque, whose blocks hold about its samples and no more (a vector grown by
-/// doubling held up to three times as many while it moved), and only the run that meets the target
-/// keeps them past its end (the closer runs before it are counted, not kept).
+/// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run uses
+/// the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2 points),
+/// unless random points on the surface say that a ball holds far from pi d^2 of it there
+/// (`first_count_distance()`); later runs correct d with the slope of log(count) over log(d) measured
+/// between runs, and bisect the bracket of distances that gave too many and too few points when a step
+/// would leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
+/// from run to run (small targets), the runs draw their darts from other seeds, derived from `seed`, at
+/// a distance that follows their mean count. One to three full runs, more for small targets and where
+/// the first distance is far off (runs stopped at 2n + 64 points). Runs return after their first sample
+/// where `holds_surface` says it covers the surface, as in `sample_request()`. Each run keeps its
+/// samples in a deque, whose blocks hold about its samples and no more (a vector grown by doubling held
+/// up to three times as many while it moved), and only the run that meets the target keeps them past
+/// its end (the closer runs before it are counted, not kept).
 template <class Traits>
 std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats,
@@ -304,7 +305,7 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
   check_surface_area(area, "sample");
   const double tolerance = (std::max)(1., 0.01 * double(n));
   // (the square roots apart, so that the area of a tiny surface does not underflow in the product)
-  double d = std::sqrt(0.6965 / double(n)) * std::sqrt(area);
+  const double planar = std::sqrt(0.6965 / double(n)) * std::sqrt(area);
   double slope = -2, last_d = 0, last_n = 0;
   const double infinity = std::numeric_limits<double>::infinity();
   // The smallest distance the runs may take: check_distance_range(), check_distance_precision(), and
@@ -319,13 +320,17 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
   // (disk_count(area, d) is disk_count(1, 1) area / d^2)
   const double bounded = std::sqrt(area / (4 * double(max_points) + 64)) * std::sqrt(disk_count(1, 1));
   const double lowest = (std::max)(precise, bounded);
+  // the plane's distance for n points on the surface's area, unless random points on the surface say
+  // it is far off (strips far narrower than it: see first_count_distance())
+  double d = first_count_distance(traits, area, n, planar, lowest, seed ^ 0x3b8f0e6d2a41c957ull);
   double too_many = 0, too_few = infinity;
   std::size_t complete_runs = 0, closest = 0; // the count of the complete run closest to n
-  // A run stops at `stop` samples, about twice the target, or at the bound: the first distance
-  // assumes that a sample covers about pi r^2 of the surface, as in the plane, and on strips far
+  // A run stops at `stop` samples, about twice the target, or at the bound: where the first distance
+  // assumed that a sample covers about pi r^2 of the surface, as in the plane, on strips far
   // narrower than d, where it covers far less, the first run made 1,267 times the target (12.7
   // million points and 3.6 GB for 10,000 on 2,000 strips 10^-7 wide) and could exhaust the memory
-  // or the bound where a larger distance reaches the target.
+  // or the bound where a larger distance reaches the target. The random points now see that, but
+  // their estimate is not a bound (and below 100 points the plane's is kept).
   const std::size_t stop =
       n <= (std::numeric_limits<std::size_t>::max() - 64) / 2 ? (std::min)(max_points, 2 * n + 64) : max_points;
   std::size_t stopped_runs = 0;
@@ -521,8 +526,9 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///   \cgalParamNBegin{number_of_points}
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
 ///       has N points within 1% (at least one point), in one to three full runs, more for small targets
-///       and for surfaces where a sample covers far less than pi r^2 (strips much narrower than the
-///       distance); a run stops at 2N + 64 points or the bound, so that the samples held stay at most
+///       (the first distance from the plane's density, or where a sample covers far from pi r^2 of the
+///       surface, strips much narrower than the distance, from random points on the surface, within
+///       about 15%); a run stops at 2N + 64 points or the bound, so that the samples held stay at most
 ///       2N + 64 (one run's: no earlier run's are kept). The runs' fragments, time and memory follow area / (pi
 ///       r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than
 ///       r, many times N where faces overlap or lie closer than r (copies of a face each count). The
