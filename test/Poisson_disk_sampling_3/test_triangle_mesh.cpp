@@ -627,12 +627,12 @@ TEST(MeshSampling, NumberOfPointsOnNarrowStrips)
 }
 
 // The first distance of a number_of_points search (first_count_distance): random points drawn by area,
-// whose pairs within d estimate the area a ball holds. On the 500 strips above it is more than five
-// times the plane's (whose count is about 60 times the target), and a run there lands within 20% of
-// the target (at seeds 0 to 7, 1.5% at most at 1,000 points, 14% at 3,000, where d is about 3.5
-// times the strips' spacing, and a set on them is neither a plane's nor a line's); on a mesh that
-// is about a plane at that scale it is the plane's, and so below 100 points; the same seed gives the
-// same distance.
+// whose pairs within d estimate the area a ball holds, only where that raises the plane's distance. On
+// the 500 strips above it is more than five times the plane's (whose count is about 60 times the
+// target), and a run there lands within 20% of the target (at seeds 0 to 7, 1.5% at most at 1,000
+// points, 14% at 3,000, where d is about 3.5 times the strips' spacing, and a set on them is neither a
+// plane's nor a line's); on a mesh that is about a plane at that scale it is the plane's, and so below
+// 100 points; the same seed gives the same distance.
 TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
 {
   std::vector<Point> p;
@@ -659,6 +659,19 @@ TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
               PDS::internal::first_count_distance(strips, area, n, planar(area, n), 0, 1));
   }
   EXPECT_EQ(PDS::internal::first_count_distance(strips, area, 99, planar(area, 99), 0, 0), planar(area, 99));
+  // nor below the smallest distance the search may take (a tiny face far from the origin, whose grid
+  // of random points then scanned boxes of cells far wider than the distance: 17 s for 10^6 points
+  // on a triangle 10^-13 wide at (1, 1, 1) before the search refused the distance, as it does at once)
+  EXPECT_EQ(PDS::internal::first_count_distance(strips, area, 1000, planar(area, 1000), 2 * planar(area, 1000), 0),
+            planar(area, 1000));
+  // It only raises the distance: on copies of a face, which the plane's density counts each, the
+  // random points' count is below the target at the plane's distance, and the search's complete runs
+  // at that distance correct it (lowered by the estimate, on copies mixed with strips, runs stopped)
+  std::vector<std::array<std::size_t, 3>> copies;
+  for(int k = 0; k < 8; ++k) copies.insert(copies.end(), {{0, 1, 2}, {0, 2, 3}});
+  const std::vector<Point> square{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const PDS::Triangle_fragment_traits_3 stack = PDS::internal::triangles_of_soup(square, copies);
+  EXPECT_EQ(PDS::internal::first_count_distance(stack, 8., 1000, planar(8, 1000), 0, 0), planar(8, 1000));
   const Mesh m = load_mesh("elephant.off");
   std::vector<Mesh::Face_index> face_of;
   const PDS::Triangle_fragment_traits_3 elephant =

@@ -284,7 +284,7 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
 
 /// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run uses
 /// the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2 points),
-/// unless random points on the surface say that a ball holds far from pi d^2 of it there
+/// unless random points on the surface say that a ball holds far less than pi d^2 of it there
 /// (`first_count_distance()`); later runs correct d with the slope of log(count) over log(d) measured
 /// between runs, and bisect the bracket of distances that gave too many and too few points when a step
 /// would leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
@@ -321,7 +321,7 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
   const double bounded = std::sqrt(area / (4 * double(max_points) + 64)) * std::sqrt(disk_count(1, 1));
   const double lowest = (std::max)(precise, bounded);
   // the plane's distance for n points on the surface's area, unless random points on the surface say
-  // it is far off (strips far narrower than it: see first_count_distance())
+  // it is far too small (strips far narrower than it: see first_count_distance())
   double d = first_count_distance(traits, area, n, planar, lowest, seed ^ 0x3b8f0e6d2a41c957ull);
   double too_many = 0, too_few = infinity;
   std::size_t complete_runs = 0, closest = 0; // the count of the complete run closest to n
@@ -524,16 +524,17 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///     \cgalParamType{double}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_points}
-///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set
-///       has N points within 1% (at least one point), in one to three full runs, more for small targets
-///       (the first distance from the plane's density, or where a sample covers far from pi r^2 of the
-///       surface, strips much narrower than the distance, from random points on the surface, within
-///       about 15%); a run stops at 2N + 64 points or the bound, so that the samples held stay at most
-///       2N + 64 (one run's: no earlier run's are kept). The runs' fragments, time and memory follow area / (pi
-///       r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than
-///       r, many times N where faces overlap or lie closer than r (copies of a face each count). The
-///       search tries no distance at which it exceeds four times `maximum_number_of_points`, and 64,
-///       and refuses a target that needs one}
+///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set has
+///       N points within 1% (at least one point). Its first run takes the plane's density (about 0.6965 area /
+///       d^2 points) or, where random points on the surface say that a ball holds far less than pi r^2 of it
+///       (strips much narrower than the distance), a distance from them, within a third of the target on the
+///       strips measured. The search takes one to three full runs where that distance is about right, more for
+///       small targets. A run stops at 2N + 64 points or the bound, so that the samples held stay at most
+///       2N + 64 (one run's: no earlier run's are kept). The runs' fragments, time and memory follow area /
+///       (pi r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than r,
+///       many times N where faces overlap or lie closer than r (copies of a face each count). The search tries
+///       no distance at which it exceeds four times `maximum_number_of_points`, and 64, and refuses a target
+///       that needs one}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}
