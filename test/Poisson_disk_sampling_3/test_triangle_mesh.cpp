@@ -561,6 +561,17 @@ TEST(MeshSampling, NarrowStripsOutnumberTheExpectedCount)
   EXPECT_TRUE(PDS::is_poisson_disk_set(out, d));
 }
 
+// 500 strips 1 long and 1e-4 wide, 0.01 apart in the plane z = 0, two triangles each
+void make_narrow_strips(std::vector<Point>& p, std::vector<std::array<std::size_t, 3>>& t)
+{
+  for(std::size_t k = 0; k < 500; ++k) {
+    const double y = 0.01 * double(k);
+    p.insert(p.end(), {Point(0, y, 0), Point(1, y, 0), Point(1, y + 1e-4, 0), Point(0, y + 1e-4, 0)});
+    t.push_back({4 * k, 4 * k + 1, 4 * k + 2});
+    t.push_back({4 * k, 4 * k + 2, 4 * k + 3});
+  }
+}
+
 // There, the plane's density for the first distance of a number_of_points search gives far more
 // points than asked for: 63,642 on 500 strips 1 long and 1e-4 wide for a target of 1,000, whose first
 // run ended the search at a bound of 20,000 (Point_limit_exceeded), and with no bound made its
@@ -571,12 +582,7 @@ TEST(MeshSampling, NumberOfPointsOnNarrowStrips)
 {
   std::vector<Point> p;
   std::vector<std::array<std::size_t, 3>> t;
-  for(std::size_t k = 0; k < 500; ++k) {
-    const double y = 0.01 * double(k);
-    p.insert(p.end(), {Point(0, y, 0), Point(1, y, 0), Point(1, y + 1e-4, 0), Point(0, y + 1e-4, 0)});
-    t.push_back({4 * k, 4 * k + 1, 4 * k + 2});
-    t.push_back({4 * k, 4 * k + 2, 4 * k + 3});
-  }
+  make_narrow_strips(p, t);
   std::vector<Point> out;
   PDS::Sampling_statistics stats;
   // a first distance from the random points, 2% to 6% off at 1,000 points: no run stopped, 1 to 5
@@ -637,12 +643,7 @@ TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
 {
   std::vector<Point> p;
   std::vector<std::array<std::size_t, 3>> t;
-  for(std::size_t k = 0; k < 500; ++k) {
-    const double y = 0.01 * double(k);
-    p.insert(p.end(), {Point(0, y, 0), Point(1, y, 0), Point(1, y + 1e-4, 0), Point(0, y + 1e-4, 0)});
-    t.push_back({4 * k, 4 * k + 1, 4 * k + 2});
-    t.push_back({4 * k, 4 * k + 2, 4 * k + 3});
-  }
+  make_narrow_strips(p, t);
   const PDS::Triangle_fragment_traits_3 strips = PDS::internal::triangles_of_soup(p, t);
   const double area = PDS::internal::total_area(strips);
   auto planar = [](double a, std::size_t n) { return std::sqrt(0.6965 * a / double(n)); };
