@@ -76,25 +76,27 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
 /// 2^(1/1024) (at most 2^60 `d0`).
 ///
 /// The estimate only raises the distance. Its count follows the mean of A_d over the surface, where
-/// a maximal set's follows the mean of 1 / A_d, region by region, which is larger: on a surface made
-/// of parts of different kinds (copies of a face that overlap, and strips far narrower than d), its
-/// count is below the set's, and lowering the distance by it made runs stop at 2n + 64 points, one
-/// for each factor of about 2: on 1,000 copies of a square 5.3 10^-6 wide and 10 strips 100 long and
-/// 2.8 10^-11 wide, 1,000 points at seed 1 ended in `Target_not_reached` after 24 runs, 20 of them
-/// stopped, where the search from the plane's distance takes 19. Where the plane's distance is too
-/// large (faces that overlap), its runs are complete, with fewer points than the target, and the
-/// search's steps correct it. The estimate is also off by the density
-/// of the surface at hand against the plane's: on strips far narrower than d and farther apart than
-/// it, a maximal set has about 1 / 1.34 d points per unit of length, the estimate 1 / 0.91 d, so the
+/// a maximal set's follows the mean of 1 / A_d, region by region, which is larger: on a surface
+/// made of parts of different kinds (copies of a face that overlap, and strips far narrower than
+/// d), its count is below the set's, and lowering the distance by it made runs stop at 2n + 64
+/// points, one for each factor of about 2: on 1,000 copies of a square 5.3 10^-6 wide and 10 strips
+/// 100 long and 2.8 10^-11 wide, 1,000 points at seed 1 ended in `Target_not_reached` after 24
+/// runs, 20 of them stopped, where the search from the plane's distance takes 19. Where the plane's
+/// distance is too large (faces that overlap), its runs are complete, with fewer points than the
+/// target, and the search's steps correct it. The estimate is also off by the density of the
+/// surface at hand against the plane's: on strips far narrower than d and farther apart than it, a
+/// maximal set has about 1 / 1.34 d points per unit of length, the estimate 1 / 0.91 d, so the
 /// first run has about a third too few points; on strips 3.5 times closer to each other than d, 12%
 /// too few to 14% too many (test `MeshSampling.FirstCountDistanceFromRandomPoints`). The points
 /// number 20 sqrt(n), at least 1,000 and at most 200,000: from 2,500 to 10^8 points, about 440 of
-/// their pairs lie within the distance sought, a spread of about 5% (more pairs below, fewer above).
+/// their pairs lie within the distance sought, a spread of about 5% (more pairs below, fewer
+/// above).
 ///
 /// `d0` is returned below 100 points, where runs are cheap; where `d0` is below `lowest`, the
-/// smallest distance the search may take (the coordinates' precision: the grid of the points would
-/// then scan a box of cells far wider than `d0`, and the search refuses the distance anyway); and
-/// where the grid of the points cannot hold a distance.
+/// smallest distance the search may take, which raises `d0` to it or refuses it (near the
+/// coordinates' precision, the grid of the points would scan boxes of cells far wider than `d0`:
+/// 17 s for 10^6 points on a triangle 10^-13 wide at (1, 1, 1)); and where the grid of the points
+/// cannot hold a distance.
 template <class Traits>
 double first_count_distance(const Traits& traits, double area, std::size_t n, double d0, double lowest,
                             std::uint64_t seed)
