@@ -20,6 +20,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <set>
 
 namespace {
 
@@ -313,6 +314,40 @@ TEST(PointHashGrid, QueriesStopWhereTheCallbackSaysSo)
       EXPECT_EQ(calls, stop + 1) << pass;
     }
   }
+}
+
+// The pairs of points near each other: each pair within the radius once, the first of it before the
+// second in the grid's order; they stop at the first pair for which the callback returns true.
+TEST(PointHashGrid, PairsNearEachOtherComeOnce)
+{
+  PDS::internal::Random rng(12);
+  std::vector<double> xyz;
+  for(int i = 0; i < 3 * 1500; ++i) xyz.push_back(6 * rng.uniform() - 3);
+  const double r = 0.4;
+  const PDS::internal::Point_hash_grid grid(r, xyz.data(), 1500);
+  std::set<std::pair<std::size_t, std::size_t>> seen;
+  std::size_t calls = 0;
+  grid.for_each_pair_near(r, [&](std::size_t k, PDS::internal::Point_hash_grid::Index j, const double* q) {
+    ++calls;
+    const std::size_t i = grid.index(k);
+    ASSERT_TRUE(q > grid.point(k));
+    ASSERT_TRUE(q[0] == xyz[3 * j] && q[1] == xyz[3 * j + 1] && q[2] == xyz[3 * j + 2]);
+    EXPECT_TRUE(seen.insert({(std::min)(i, std::size_t(j)), (std::max)(i, std::size_t(j))}).second);
+  });
+  std::size_t within = 0;
+  for(std::size_t a = 0; a < 1500; ++a)
+    for(std::size_t b = a + 1; b < 1500; ++b) {
+      const double x = xyz[3 * a] - xyz[3 * b], y = xyz[3 * a + 1] - xyz[3 * b + 1], z = xyz[3 * a + 2] - xyz[3 * b + 2];
+      if(x * x + y * y + z * z > r * r) continue;
+      ++within;
+      EXPECT_EQ(seen.count({a, b}), 1u) << a << " " << b;
+    }
+  EXPECT_GT(within, 300u);
+  std::size_t stopped_after = 0;
+  grid.for_each_pair_near(r, [&](std::size_t, PDS::internal::Point_hash_grid::Index, const double*) {
+    return ++stopped_after == calls / 2;
+  });
+  EXPECT_EQ(stopped_after, calls / 2);
 }
 
 TEST(IsMaximal, FindsTheHoleLeftByARemovedSample)

@@ -115,20 +115,15 @@ Poisson_disk_check is_poisson_disk_set(const PointRange& points, double minimum_
   }
   const internal::Point_hash_grid grid = internal::grid_of(xyz, d);
   Poisson_disk_check result;
-  // in the grid's order, by cell, so that the points near one point are mostly near the one before;
-  // each pair once, when its second point comes after the first in that order; the query stops at
-  // the first pair too close
-  for(std::size_t k = 0; k < grid.size() && result.valid; ++k) {
-    const double* p = grid.point(k);
-    grid.for_each_near(p, d, [&](internal::Point_hash_grid::Index j, const double* q) {
-      if(q <= p || internal::compare_distance_exact(p, q, d) != CGAL::SMALLER) return false;
-      const std::size_t i = grid.index(k);
-      result.valid = false;
-      result.first = (std::min)(i, std::size_t(j));
-      result.second = (std::max)(i, std::size_t(j));
-      return true;
-    });
-  }
+  // each pair once, up to the first too close
+  grid.for_each_pair_near(d, [&](std::size_t k, internal::Point_hash_grid::Index j, const double* q) {
+    if(internal::compare_distance_exact(grid.point(k), q, d) != CGAL::SMALLER) return false;
+    const std::size_t i = grid.index(k);
+    result.valid = false;
+    result.first = (std::min)(i, std::size_t(j));
+    result.second = (std::max)(i, std::size_t(j));
+    return true;
+  });
   return result;
 }
 

@@ -119,6 +119,23 @@ public:
     });
   }
 
+  /// calls `f(k, j, q)` once for each pair of points at distance <= `radius` from each other (and
+  /// maybe a few more pairs), where `k` is the place of the first in the grid's order (`point(k)`,
+  /// `index(k)`) and `j` and `q` the index and position of the second, which comes after it in that
+  /// order: the points in the grid's order, by cell, so that the points near one point are mostly
+  /// near the one before. Where `f` returns a `bool`, the pairs stop at the first for which it
+  /// returns true.
+  template <class F>
+  void for_each_pair_near(double radius, F&& f) const
+  {
+    bool stopped = false;
+    for(std::size_t k = 0; k < size() && !stopped; ++k) {
+      const double* p = point(k);
+      auto pair = [&](Index j, const double* q) { return f(k, j, q); };
+      for_each_near(p, radius, [&](Index j, const double* q) { return q > p && (stopped = stops(pair, j, q)); });
+    }
+  }
+
   /// Queries that follow each other closely, as the pieces of a surface split depth first: a query
   /// whose box meets the same cells as the one before reads no hash slot. (The certificate of a
   /// million samples of lion.off spent a quarter of its time in the hash table, eight lookups a

@@ -54,14 +54,11 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
 {
   const Point_hash_grid grid(d, xyz.data(), xyz.size() / 3);
   std::size_t pairs = 0;
-  for(std::size_t k = 0; k < grid.size() && pairs <= limit; ++k) {
+  grid.for_each_pair_near(d, [&](std::size_t k, Point_hash_grid::Index, const double* q) {
     const double* p = grid.point(k);
-    grid.for_each_near(p, d, [&](Point_hash_grid::Index, const double* q) {
-      if(q <= p) return false;
-      const double x = q[0] - p[0], y = q[1] - p[1], z = q[2] - p[2];
-      return x * x + y * y + z * z <= d * d && ++pairs > limit;
-    });
-  }
+    const double x = q[0] - p[0], y = q[1] - p[1], z = q[2] - p[2];
+    return x * x + y * y + z * z <= d * d && ++pairs > limit;
+  });
   return pairs;
 }
 
