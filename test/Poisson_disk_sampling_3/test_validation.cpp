@@ -337,7 +337,8 @@ TEST(PointHashGrid, PairsNearEachOtherComeOnce)
   std::size_t within = 0;
   for(std::size_t a = 0; a < 1500; ++a)
     for(std::size_t b = a + 1; b < 1500; ++b) {
-      const double x = xyz[3 * a] - xyz[3 * b], y = xyz[3 * a + 1] - xyz[3 * b + 1], z = xyz[3 * a + 2] - xyz[3 * b + 2];
+      const double x = xyz[3 * a] - xyz[3 * b], y = xyz[3 * a + 1] - xyz[3 * b + 1];
+      const double z = xyz[3 * a + 2] - xyz[3 * b + 2];
       if(x * x + y * y + z * z > r * r) continue;
       ++within;
       EXPECT_EQ(seen.count({a, b}), 1u) << a << " " << b;
