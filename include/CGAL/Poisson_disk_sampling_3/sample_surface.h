@@ -527,7 +527,7 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set has
 ///       N points within 1% (at least one point). Its first run takes the plane's density (about 0.6965 area /
 ///       d^2 points) or, where random points on the surface say that a ball holds far less than pi r^2 of it
-///       (strips much narrower than the distance), a distance from them, within a third of the target on the
+///       (strips much narrower than the distance), a distance from them, within a quarter of the target on the
 ///       strips measured. The search takes one to three full runs where that distance is about right, more for
 ///       small targets. A run stops at 2N + 64 points or the bound, so that the samples held stay at most
 ///       2N + 64 (one run's: no earlier run's are kept). The runs' fragments, time and memory follow area /
