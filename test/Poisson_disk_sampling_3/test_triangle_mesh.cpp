@@ -635,8 +635,8 @@ TEST(MeshSampling, NumberOfPointsOnNarrowStrips)
 // The first distance of a number_of_points search (first_count_distance): random points drawn by area,
 // whose pairs within d estimate the area a ball holds, only where that raises the plane's distance. On
 // the 500 strips above it is more than five times the plane's (whose count is about 60 times the
-// target), and a run there lands within 20% of the target at seeds 0 and 1 (at seeds 0 to 7, 1.8% at
-// most at 1,000 points, 23% at 3,000, where d is about 3.5 times the strips' spacing, and a set on them
+// target), and a run there lands within 20% of the target at seeds 0 and 1 (at seeds 0 to 7, 1.6% at
+// most at 1,000 points, 30% at 3,000, where d is about 3.5 times the strips' spacing, and a set on them
 // is neither a plane's nor a line's); on a mesh that is about a plane at that scale it is the plane's,
 // and so below 100 points; the same seed gives the same distance.
 TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
@@ -662,7 +662,8 @@ TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
   EXPECT_EQ(PDS::internal::first_count_distance(strips, area, 99, planar(area, 99), 0, 0), planar(area, 99));
   // Strips farther apart than the distance are lines at its scale, where a maximal set has about
   // 1 / 1.34 d points a unit of length and the plane's constant says 1 / 0.91 d: from the pairs within
-  // d and 2 d, the line's constant (0.63 to 0.70 of the target with the plane's, seeds 0 to 2)
+  // d and 2 d, the line's constant; 0.90 to 1.01 of the target at seeds 0 to 2 (0.63 to 0.70 with the
+  // plane's: the estimate's spread is about 5%, and as much again from the ratio of the pairs)
   std::vector<Point> q;
   std::vector<std::array<std::size_t, 3>> u;
   for(std::size_t k = 0; k < 10; ++k) {
@@ -677,7 +678,7 @@ TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
     const double d = PDS::internal::first_count_distance(lines, line_area, 1000, planar(line_area, 1000), 0, seed);
     std::vector<Point> out;
     PDS::sample_polygon_soup(q, u, std::back_inserter(out), PDS::parameters::minimum_distance(d).random_seed(seed));
-    EXPECT_NEAR(double(out.size()), 1000., 100.) << seed;
+    EXPECT_NEAR(double(out.size()), 1000., 150.) << seed;
   }
   // nor below the smallest distance the search may take (a tiny face far from the origin, whose grid
   // of random points then scanned boxes of cells far wider than the distance: 17 s for 10^6 points

@@ -68,30 +68,31 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
 /// the plane has about 0.6965 pi area / A_d points, where A_d = pi d^2 is the area within d of a
 /// point; on strips far narrower than d, A_d is far below pi d^2, and the plane's distance gives a
 /// hundred to a thousand times the target. The points' pairs within d estimate the mean of A_d: 2
-/// pairs / (m (m - 1)) is about A_d / area for m points. Where the count that estimate gives at `d0`
-/// is more than 2 n, the distance whose estimated count is `n` is returned instead, to a factor of
-/// 2^(1/1024) (at most 2^60 `d0`), with the constant of the plane, 0.6965 pi, or, where the surface
-/// is a line at that scale (strips far narrower than d and farther apart than it), that of a line,
-/// 2 / 1.3376 (a maximal set on a line has about 1 / 1.3376 d points a unit of length, and A_d is 2 d
-/// times the strips' width): the exponent of the ratio of the pairs within 2 d and within d, 2 on a
-/// plane and 1 on a line, interpolates between the two.
+/// pairs / (m (m - 1)) is about A_d / area for m points. Where the count that estimate gives at
+/// `d0` is more than 2 n, the distance whose estimated count is `n` is returned instead, to a
+/// factor of 2^(1/1024) (at most 2^60 `d0`), with the constant of the plane, 0.6965 pi. Where the
+/// surface is a line at that scale (strips far narrower than d and farther apart than it), the
+/// constant is that of a line, 2 / 1.3376 (a maximal set on a line has about 1 / 1.3376 d points a
+/// unit of length, and A_d is 2 d times the strips' width), and the distance smaller by their
+/// ratio: the exponent of the ratio of the pairs within 2 d and within d, 2 on a plane and 1 on a
+/// line, interpolates between the two (see the code).
 ///
 /// The estimate only raises the distance. Its count follows the mean of A_d over the surface, where
-/// a maximal set's follows the mean of 1 / A_d, region by region, which is larger: on a surface made
-/// of parts of different kinds (copies of a face that overlap, and strips far narrower than d), its
-/// count is below the set's, and lowering the distance by it made runs stop at 2n + 64 points, one
-/// for each factor of about 2: on 1,000 copies of a square 5.3 10^-6 wide and 10 strips 100 long and
-/// 2.8 10^-11 wide, 1,000 points at seed 1 ended in `Target_not_reached` after 24 runs, 20 of them
-/// stopped, where the search from the plane's distance takes 19. Where the plane's distance is too
-/// large (faces that overlap), its runs are complete, with fewer points than the target, and the
-/// search's steps correct it. Nor is the estimate exact where the surface is neither a plane nor a
-/// line at the scale of d: on 500 strips 0.01 apart, a run at its distance for 3,000 points (about
-/// 3.5 times their spacing) has 12% too few to 23% too many at seeds 0 to 7; on strips 10 and 1
-/// apart, lines at that scale, 8% too few to 6% too many at seeds 0 to 2 (a third too few with the
-/// plane's constant alone); test `MeshSampling.FirstCountDistanceFromRandomPoints`. The points
-/// number 20 sqrt(n), at least 1,000 and at most 200,000: from 2,500 to 10^8 points, about 440 of
-/// their pairs lie within the distance sought, a spread of about 5% (more pairs below, fewer
-/// above).
+/// a maximal set's follows the mean of 1 / A_d, region by region, which is larger: on a surface
+/// made of parts of different kinds (copies of a face that overlap, and strips far narrower than
+/// d), its count is below the set's, and lowering the distance by it made runs stop at 2n + 64
+/// points, one for each factor of about 2: on 1,000 copies of a square 5.3 10^-6 wide and 10 strips
+/// 100 long and 2.8 10^-11 wide, 1,000 points at seed 1 ended in `Target_not_reached` after 24
+/// runs, 20 of them stopped, where the search from the plane's distance takes 19. Where the plane's
+/// distance is too large (faces that overlap), its runs are complete, with fewer points than the
+/// target, and the search's steps correct it. Nor is the estimate exact where the surface is
+/// neither a plane nor a line at the scale of d: on 500 strips 0.01 apart, a run at its distance
+/// for 3,000 points (about 3.5 times their spacing) has 12% too few to 30% too many at seeds 0 to
+/// 7; on strips 10 and 1 apart, lines at that scale, 10% too few to 8% too many at seeds 0 to 2 (a
+/// third too few with the plane's constant alone); test
+/// `MeshSampling.FirstCountDistanceFromRandomPoints`. The points number 20 sqrt(n), at least 1,000
+/// and at most 200,000: from 2,500 to 10^8 points, about 440 of their pairs lie within the distance
+/// sought, a spread of about 5% (more pairs below, fewer above).
 ///
 /// `d0` is returned below 100 points, where runs are cheap; where `d0` is below `lowest`, the
 /// smallest distance the search may take, which raises `d0` to it or refuses it (near the
@@ -108,23 +109,14 @@ double first_count_distance(const Traits& traits, double area, std::size_t n, do
   const double m = double(xyz.size() / 3);
   if(m < 500) return d0; // (a model whose random_sample() refuses most darts)
   // the density constants of the plane (0.6965 pi) and of a line (2 / 1.3376); the pairs within d
-  // that make the estimated count n with the constant c are c m (m - 1) / 2 / n
+  // that make the estimated count n with the plane's are `target`
   const double plane = 0.6965 * 3.141592653589793, line = 2 / 1.3376, all = m * (m - 1) / 2;
   const std::size_t limit = std::size_t(8 * plane * all / double(n)) + 16;
   try {
     auto pairs = [&](double d) { return double(close_pairs(xyz, d, limit)); };
-    // the distance in [lo, hi] whose pairs are `target`, where there are fewer at lo and as many or
-    // more at hi
-    auto bisect = [&](double lo, double hi, double target) {
-      for(int k = 0; k < 10; ++k) {
-        const double mid = std::sqrt(lo) * std::sqrt(hi);
-        if(pairs(mid) < target) lo = mid;
-        else hi = mid;
-      }
-      return std::sqrt(lo) * std::sqrt(hi);
-    };
-    double target = plane * all / double(n);
+    const double target = plane * all / double(n);
     if(pairs(d0) >= target / 2) return d0;
+    // a bracket [lo, hi] with fewer pairs than the target at lo and as many or more at hi
     double lo = d0, hi = d0;
     for(int k = 0;; ++k) {
       if(k == 60) return d0;
@@ -132,19 +124,23 @@ double first_count_distance(const Traits& traits, double area, std::size_t n, do
       if(pairs(hi) >= target) break;
       lo = hi;
     }
-    double d = bisect(lo, hi, target);
+    for(int k = 0; k < 10; ++k) {
+      const double mid = std::sqrt(lo) * std::sqrt(hi);
+      if(pairs(mid) < target) lo = mid;
+      else hi = mid;
+    }
+    const double d = std::sqrt(lo) * std::sqrt(hi);
     // The plane's constant holds where the surface is two-dimensional at the scale of d. Where it is
     // a line (strips far narrower than d and farther apart than it), the pairs within 2 d are twice
     // those within d, not four times, and the constant is the line's; in between, it is interpolated
-    // by the exponent of that ratio. The distance is then the smaller one whose pairs are fewer by
-    // that constant.
+    // by the exponent D of that ratio, and the distance follows the pairs as d^D: fewer pairs by the
+    // constant's ratio, c / plane, at a distance smaller by (c / plane)^(1 / D). (A search for
+    // those pairs goes farther where part of them do not follow d^D: with strips and a part much
+    // smaller than d that holds 0.4 of the pairs, whose pairs stay, the strips' count reckoned at the
+    // distance it finds is 2.4 n, at the step's 1.7 n.)
     const double dimension = (std::min)(2., (std::max)(1., std::log2(pairs(2 * d) / pairs(d))));
     const double c = line + (dimension - 1) * (plane - line);
-    if(c < plane) {
-      target = c * all / double(n); // above the pairs at d0, fewer than plane / 2 * all / n
-      d = bisect(d0, d, target);
-    }
-    return d;
+    return (std::max)(d0, d * std::pow(c / plane, 1 / dimension));
   } catch(const Invalid_input&) {
     return d0; // a distance too small for the grid of the points: the search's own checks tell
   }
