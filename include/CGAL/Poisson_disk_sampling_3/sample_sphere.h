@@ -70,18 +70,17 @@ inline bool one_sample_holds_sphere(const Sphere_fragment_traits_3& traits, cons
 /// @param np exactly one of `radius`, `minimum_distance` and `number_of_points`, and the options of
 ///        `sample_surface()`
 ///
-/// A minimum distance of the diameter 2R or more gives one uniform point, or more far from the origin
-/// (below): every point of the sphere is within 2R of it. Up to about 2R (1 + 2 10^-15), the
+/// A minimum distance of the diameter 2R or more gives one uniform point, or more far from the
+/// origin (below): every point of the sphere is within 2R of it. Up to about 2R (1 + 2 10^-15), the
 /// antipode's distance 2R is within the rounding of d, and `is_maximal()` answers such a set
 /// undecided. (From 2R up, `sample_sphere()` stops the engine after its first sample p if the
 /// farthest point of the sphere, |p - c| + R away, is at most d + 2^-48 R away, decided exactly,
-/// without the engine's coverage tests;
-/// `sample_surface()` with the sphere's model does not, and from 2R to about 2R (1 + 2 10^-15) it
-/// can stop with `Point_limit_exceeded`. On a sphere far from the origin, p, rounded to the centre's
-/// unit in the last place, can lie farther outside the sphere, and its ball leave a cap out: the run
-/// then goes on, and gives two points or more. A one-point set whose |p - c| + R is within about
-/// 2^-48 R of d is answered undecided by `is_maximal()`, at any d: rare far from the origin, about
-/// once in a million runs.)
+/// without the engine's coverage tests; `sample_surface()` with the sphere's model does not, and
+/// from 2R to about 2R (1 + 2 10^-15) it can stop with `Point_limit_exceeded`. On a sphere far from
+/// the origin, p, rounded to the centre's unit in the last place, can lie farther outside the
+/// sphere, and its ball leave a cap out: the run then goes on, and gives two points or more. A
+/// one-point set whose |p - c| + R is within about 2^-48 R of d is answered undecided by
+/// `is_maximal()`, at any d: rare far from the origin, about once in a million runs.)
 ///
 /// \returns the output iterator past the last point
 /// \throws Invalid_input for a sphere whose squared radius is not positive and finite as a double, a

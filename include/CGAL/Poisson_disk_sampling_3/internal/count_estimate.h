@@ -111,10 +111,10 @@ double first_count_distance(const Traits& traits, double area, std::size_t n, do
   // the density constants of the plane (0.6965 pi) and of a line (2 / 1.3376); the pairs within d
   // that make the estimated count n with the plane's are `target`
   const double plane = 0.6965 * 3.141592653589793, line = 2 / 1.3376, all = m * (m - 1) / 2;
-  const std::size_t limit = std::size_t(8 * plane * all / double(n)) + 16;
+  const double target = plane * all / double(n);
+  const std::size_t limit = std::size_t(8 * target) + 16;
   try {
     auto pairs = [&](double d) { return double(close_pairs(xyz, d, limit)); };
-    const double target = plane * all / double(n);
     if(pairs(d0) >= target / 2) return d0;
     // a bracket [lo, hi] with fewer pairs than the target at lo and as many or more at hi
     double lo = d0, hi = d0;
