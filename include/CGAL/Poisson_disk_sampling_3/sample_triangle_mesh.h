@@ -115,6 +115,9 @@ Triangle_fragment_traits_3 triangles_of_soup(const PointRange& points, const Pol
     std::array<std::size_t, 3> t{};
     std::size_t k = 0;
     for(const auto& v : polygon) {
+      // (converted, a fraction would be dropped, and NaN or a value of 2^64 or more is undefined)
+      static_assert(!std::is_floating_point<std::decay_t<decltype(v)>>::value,
+                    "a polygon soup's polygons hold integer indices into its points, not floating-point ones");
       if constexpr(std::is_signed<std::decay_t<decltype(v)>>::value) {
         if(v < 0) refuse_index(v);
       }
@@ -244,7 +247,8 @@ SampleOutputIterator sample_triangle_mesh_with_locations(const TriangleMesh& tm,
 /// take it: a range of points and a range of polygons, each a range of three point indices.
 ///
 /// @tparam PointRange a random-access range of `Point_3`
-/// @tparam PolygonRange a range of ranges of integer indices into `points`
+/// @tparam PolygonRange a range of ranges of integer indices into `points` (floating-point ones do not
+///         compile)
 /// @tparam PointOutputIterator an output iterator accepting `Point_3`
 /// @tparam NamedParameters as for `sample_triangle_mesh()`, without `vertex_point_map`
 ///
@@ -282,7 +286,8 @@ PointOutputIterator sample_polygon_soup(const PointRange& points, const PolygonR
 /// Same as `sample_polygon_soup()`, and writes for each sample the polygon's index, barycentric
 /// coordinates in the polygon's vertex order and its normal.
 /// @tparam PointRange a random-access range of `Point_3`
-/// @tparam PolygonRange a range of ranges of integer indices into `points`
+/// @tparam PolygonRange a range of ranges of integer indices into `points` (floating-point ones do not
+///         compile)
 /// @tparam SampleOutputIterator an output iterator accepting `Triangle_sample<GeomTraits, std::size_t>`
 /// @tparam NamedParameters as for `sample_polygon_soup()`
 ///
