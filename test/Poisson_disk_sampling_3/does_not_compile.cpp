@@ -40,6 +40,8 @@ void calls()
   PDS::sample_triangle_mesh(float_mesh, std::back_inserter(float_out), PDS::parameters::minimum_distance(0.1));
 #elif defined(PDS_CASE_CONCURRENCY_TAG)
   PDS::sample_triangle_mesh(mesh, to, PDS::parameters::minimum_distance(0.1).concurrency(1));
+#elif defined(PDS_CASE_PARALLEL_TAG_WITHOUT_TBB)
+  PDS::sample_triangle_mesh(mesh, to, PDS::parameters::minimum_distance(0.1).concurrency(CGAL::Parallel_tag()));
 #elif defined(PDS_CASE_SOUP_VERTEX_POINT_MAP)
   PDS::sample_polygon_soup(points, triangles, to,
                            PDS::parameters::minimum_distance(0.1).vertex_point_map(get(CGAL::vertex_point, mesh)));
