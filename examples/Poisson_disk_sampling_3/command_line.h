@@ -13,6 +13,7 @@
 #include <CGAL/Poisson_disk_sampling_3.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -44,6 +45,25 @@ inline double read_number(int argc, char** argv, int& i, std::string option = st
   const char* text = argv[++i];
   const double value = std::strtod(text, &end);
   if(end == text || *end != '\0') throw Usage_error("malformed number after " + option + ": " + text);
+  return value;
+}
+
+/// the integer in argv[i + 1], after argv[i], from 0 to 2^64 - 1 in decimal digits (read as a double,
+/// a seed above 2^53 would be rounded to another one); advances i
+inline std::uint64_t read_seed(int argc, char** argv, int& i)
+{
+  const std::string option = argv[i];
+  if(i + 1 >= argc) throw Usage_error("missing number after " + option);
+  const std::string text = argv[++i];
+  const std::string largest = "18446744073709551615";
+  // the digits without leading zeros
+  const std::size_t first = text.find_first_not_of('0');
+  const std::string digits = first == std::string::npos ? std::string("0") : text.substr(first);
+  if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
+     digits.size() > largest.size() || (digits.size() == largest.size() && digits > largest))
+    throw Usage_error(option + " takes an integer from 0 to " + largest + ", not \"" + text + "\"");
+  std::uint64_t value = 0;
+  for(char c : digits) value = 10 * value + std::uint64_t(c - '0');
   return value;
 }
 
@@ -133,17 +153,22 @@ inline std::string data_file(const std::string& name)
 
 struct Size_options
 {
-  std::optional<double> radius, minimum_distance, count, seed, max_points;
+  std::optional<double> radius, minimum_distance, count, max_points;
+  std::optional<std::uint64_t> seed;
 
   /// reads argv[i] (and its value) if it is one of the size options, --seed or
   /// --maximum-number-of-points; advances i
   bool read(int argc, char** argv, int& i, Seen_options& seen)
   {
     const std::string a = argv[i];
+    if(a == "--seed") {
+      seen.once(a);
+      seed = read_seed(argc, argv, i);
+      return true;
+    }
     std::optional<double>* target = a == "--radius" ? &radius
                                     : a == "--minimum-distance" ? &minimum_distance
                                     : a == "--count" ? &count
-                                    : a == "--seed" ? &seed
                                     : a == "--maximum-number-of-points" ? &max_points
                                     : nullptr;
     if(!target) return false;
@@ -161,8 +186,6 @@ struct Size_options
       throw Usage_error("--count takes a positive integer");
     if(max_points && !(*max_points >= 1 && *max_points == std::floor(*max_points) && *max_points < 1e18))
       throw Usage_error("--maximum-number-of-points takes a positive integer");
-    if(seed && !(*seed >= 0 && *seed <= 4294967295. && *seed == std::floor(*seed)))
-      throw Usage_error("--seed takes an integer from 0 to 4294967295");
   }
 
   /// Calls `sample(np)` with the named parameters of the size given, the seed, the bound and `stats`
@@ -174,7 +197,7 @@ struct Size_options
                    CGAL::Poisson_disk_sampling_3::Sampling_statistics& stats, Sample&& sample) const
   {
     namespace P = CGAL::Poisson_disk_sampling_3::parameters;
-    const unsigned s = seed ? unsigned(*seed) : 0u;
+    const std::uint64_t s = seed ? *seed : 0;
     const std::size_t m = max_points ? std::size_t(*max_points) : std::size_t(100000000);
     // the options every size takes
     auto with_options = [&](const auto& size_np) {
@@ -187,6 +210,17 @@ struct Size_options
     else sample(with_options(P::minimum_distance(minimum_distance ? *minimum_distance : default_distance)));
   }
 };
+
+/// `x` with the digits that give it back when read (17 significant digits), so that the minimum distance
+/// a `--count` run found, given back with `--minimum-distance` and its `random_seed` with `--seed`,
+/// gives the same samples
+inline std::string exact_text(double x)
+{
+  std::ostringstream text;
+  text.precision(17);
+  text << x;
+  return text.str();
+}
 
 /// the answer of `is_maximal()` for the report: true, false with the place of a gap, or undecided (a
 /// set maximal with no margin, or the certificate's bounds on its work reached: user manual, Validation)

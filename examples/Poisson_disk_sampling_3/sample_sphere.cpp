@@ -100,7 +100,9 @@ int main(int argc, char** argv)
 
     std::ostringstream text;
     text << "points: " << points.size() << "\n"
-         << "minimum_distance: " << stats.minimum_distance << "\n"
+         << "minimum_distance: " << examples::exact_text(stats.minimum_distance) << "\n"
+         << "random_seed: " << stats.random_seed << "\n"
+         << "runs: " << stats.number_of_runs << "\n"
          << "seconds: " << seconds << "\n"
          << "points_per_second: " << double(points.size()) / seconds << "\n"
          << "is_poisson_disk_set: " << (pds ? "true" : "false") << "\n"
