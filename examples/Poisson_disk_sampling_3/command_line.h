@@ -211,15 +211,17 @@ struct Size_options
   }
 };
 
-/// `x` with the digits that give it back when read (17 significant digits), so that the minimum distance
-/// a `--count` run found, given back with `--minimum-distance` and its `random_seed` with `--seed`,
-/// gives the same samples
+/// `x` with the fewest significant digits that give it back when read (at most 17), so that the
+/// minimum distance a `--count` run found, given back with `--minimum-distance` and its `random_seed`
+/// with `--seed`, gives the same samples, and a distance given as 0.1 is printed 0.1
 inline std::string exact_text(double x)
 {
-  std::ostringstream text;
-  text.precision(17);
-  text << x;
-  return text.str();
+  for(int digits = 1;; ++digits) {
+    std::ostringstream text;
+    text.precision(digits);
+    text << x;
+    if(digits >= 17 || std::strtod(text.str().c_str(), nullptr) == x) return text.str();
+  }
 }
 
 /// the answer of `is_maximal()` for the report: true, false with the place of a gap, or undecided (a

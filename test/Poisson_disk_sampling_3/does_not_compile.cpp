@@ -2,8 +2,8 @@
 //
 // Calls that must not compile. Each case is this file compiled with one PDS_CASE_* macro defined
 // (an object library of its own, outside `all`); its CTest test builds it and passes where the build
-// prints the package's message for that mistake (CMakeLists.txt), not on any other error. Without a
-// macro the file compiles, so that a case fails for its own call and nothing else.
+// fails with the package's message for that mistake (CMakeLists.txt), not on any other error. Without
+// a macro the file compiles, so that a case fails for its own call and nothing else.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -38,6 +38,11 @@ void calls()
   CGAL::Surface_mesh<Float_point> float_mesh;
   std::vector<Float_point> float_out;
   PDS::sample_triangle_mesh(float_mesh, std::back_inserter(float_out), PDS::parameters::minimum_distance(0.1));
+#elif defined(PDS_CASE_INTEGER_POINTS)
+  typedef CGAL::Simple_cartesian<int>::Point_3 Integer_point;
+  CGAL::Surface_mesh<Integer_point> integer_mesh;
+  std::vector<Integer_point> integer_out;
+  PDS::sample_triangle_mesh(integer_mesh, std::back_inserter(integer_out), PDS::parameters::minimum_distance(0.1));
 #elif defined(PDS_CASE_CONCURRENCY_TAG)
   PDS::sample_triangle_mesh(mesh, to, PDS::parameters::minimum_distance(0.1).concurrency(1));
 #elif defined(PDS_CASE_PARALLEL_TAG_WITHOUT_TBB)

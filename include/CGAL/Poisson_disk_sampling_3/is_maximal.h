@@ -149,7 +149,8 @@ auto is_maximal(const TriangleMesh& tm, const PointRange& samples, double minimu
 /// \ingroup PkgPoissonDiskSampling3Ref
 /// Certifies that `samples` is maximal on a polygon soup of triangles, as `is_maximal()` for meshes.
 /// @tparam PointRange a range of `Point_3`
-/// @tparam PolygonRange a range of ranges of three indices into `points`
+/// @tparam PolygonRange a range of ranges of three integer indices into `points` (floating-point ones
+///         do not compile)
 /// @tparam SampleRange a range of `Point_3` of any CGAL kernel
 ///
 /// @param points the points of the soup
