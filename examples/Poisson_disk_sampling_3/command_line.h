@@ -12,6 +12,7 @@
 
 #include <CGAL/Poisson_disk_sampling_3.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -55,15 +56,11 @@ inline std::uint64_t read_seed(int argc, char** argv, int& i)
   const std::string option = argv[i];
   if(i + 1 >= argc) throw Usage_error("missing number after " + option);
   const std::string text = argv[++i];
-  const std::string largest = "18446744073709551615";
-  // the digits without leading zeros
-  const std::size_t first = text.find_first_not_of('0');
-  const std::string digits = first == std::string::npos ? std::string("0") : text.substr(first);
-  if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
-     digits.size() > largest.size() || (digits.size() == largest.size() && digits > largest))
-    throw Usage_error(option + " takes an integer from 0 to " + largest + ", not \"" + text + "\"");
+  // (digits only: from_chars takes no sign for an unsigned type, and says when the value is too large)
   std::uint64_t value = 0;
-  for(char c : digits) value = 10 * value + std::uint64_t(c - '0');
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if(text.empty() || error != std::errc() || end != text.data() + text.size())
+    throw Usage_error(option + " takes an integer from 0 to 18446744073709551615, not \"" + text + "\"");
   return value;
 }
 
