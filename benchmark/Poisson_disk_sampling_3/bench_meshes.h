@@ -57,11 +57,48 @@ inline void make_strips(Mesh& m, double width)
   }
 }
 
+/// 20 unit squares 0.01 apart, one above the other, two triangles each: at distances of a few times
+/// their spacing, a ball holds parts of several of them, and a maximal set's count goes about as d^-3
+inline void make_sheets(Mesh& m)
+{
+  for(int k = 0; k < 20; ++k) {
+    const double z = 0.01 * k;
+    const auto a = m.add_vertex(Mesh::Point(0, 0, z)), b = m.add_vertex(Mesh::Point(1, 0, z));
+    const auto c = m.add_vertex(Mesh::Point(1, 1, z)), d = m.add_vertex(Mesh::Point(0, 1, z));
+    m.add_face(a, b, c);
+    m.add_face(a, c, d);
+  }
+}
+
+/// 100 tubes of radius 0.01 and length 1, 0.05 apart side by side, each of 100 rings of 24 cells, two
+/// triangles a cell: at distances about their diameter a sample goes from holding part of a ring to
+/// holding all of it, and a maximal set's count falls faster than d^-3
+inline void make_tubes(Mesh& m)
+{
+  const int segments = 24, rings = 100;
+  for(int t = 0; t < 100; ++t) {
+    std::vector<Mesh::Vertex_index> v;
+    for(int r = 0; r <= rings; ++r)
+      for(int i = 0; i < segments; ++i) {
+        const double a = 6.283185307179586 * i / segments;
+        v.push_back(m.add_vertex(Mesh::Point(0.05 * t + 0.01 * std::cos(a), 0.01 * std::sin(a), double(r) / rings)));
+      }
+    for(int r = 0; r < rings; ++r)
+      for(int i = 0; i < segments; ++i) {
+        const auto a = v[r * segments + i], b = v[r * segments + (i + 1) % segments];
+        const auto c = v[(r + 1) * segments + i], d = v[(r + 1) * segments + (i + 1) % segments];
+        m.add_face(a, b, d);
+        m.add_face(a, d, c);
+      }
+  }
+}
+
 /// A file of CGAL's data set (`lion.off`, ...); "armadillo_loop3": armadillo.off Loop-subdivided
 /// three times, 52,000 faces x 4^3 = 3.3 million faces; "cylinder_128": a cylinder 30 high, of
 /// radius 1, made of 128 triangles as high as it is and 0.1 wide; "cylinder_rings": the same surface
 /// cut into 306 rings, its triangles about as high as they are wide; "strips_1e-7" and "strips_1e-5":
-/// 2,000 strips that wide (`make_strips`). Read or made once per process.
+/// 2,000 strips that wide (`make_strips`); "sheets" and "tubes": `make_sheets()` and `make_tubes()`.
+/// Read or made once per process.
 inline const Mesh& mesh(const std::string& name)
 {
   static std::map<std::string, std::unique_ptr<Mesh>> cache;
@@ -74,6 +111,10 @@ inline const Mesh& mesh(const std::string& name)
       make_cylinder(*m, 306);
     } else if(name == "strips_1e-7" || name == "strips_1e-5") {
       make_strips(*m, name == "strips_1e-7" ? 1e-7 : 1e-5);
+    } else if(name == "sheets") {
+      make_sheets(*m);
+    } else if(name == "tubes") {
+      make_tubes(*m);
     } else if(name == "armadillo_loop3") {
       *m = mesh("armadillo.off");
       CGAL::Subdivision_method_3::Loop_subdivision(*m, CGAL::parameters::number_of_iterations(3));

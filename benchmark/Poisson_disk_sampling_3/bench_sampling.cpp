@@ -364,9 +364,9 @@ bool count_and_radius(benchmark::State& state, const Mesh& m, std::size_t n, std
 }
 
 // number_of_points mode against the radius mode giving the same count, at the default seed (0), the
-// fastest of three alternating runs of each: args: n. On the strips, where the search takes several
-// full runs and its time depends on where they land, the same for seeds 1 to 4 (their smallest and
-// largest ratio).
+// fastest of three alternating runs of each: args: n. On the strips, the sheets and the tubes, where
+// the search takes several full runs and its time depends on where they land, the same for seeds 1 to
+// 4 (their smallest and largest ratio).
 void count_mode_case(benchmark::State& state, const std::string& name)
 {
   const Mesh& m = mesh(name);
@@ -385,16 +385,21 @@ void count_mode_case(benchmark::State& state, const std::string& name)
   const double budget = 200 * double(run.points) + 300 * double(num_faces(m));
   report_memory(state, run.peak_heap, -1, double(run.points), budget);
   state.counters["radius_mode_memory_budget_use"] = run.radius_peak_heap / budget;
-  if(name.rfind("strips", 0) == 0) {
+  if(name.rfind("strips", 0) == 0 || name == "sheets" || name == "tubes") {
     double lowest = std::numeric_limits<double>::infinity(), highest = 0;
+    std::size_t fewest_runs = std::size_t(-1), most_runs = 0;
     for(std::uint64_t seed = 1; seed <= 4; ++seed) {
       Count_run other;
       if(!count_and_radius(state, m, n, seed, other, false)) return;
       lowest = (std::min)(lowest, other.seconds / other.radius_seconds);
       highest = (std::max)(highest, other.seconds / other.radius_seconds);
+      fewest_runs = (std::min)(fewest_runs, other.runs);
+      most_runs = (std::max)(most_runs, other.runs);
     }
     state.counters["count_vs_radius_seeds_1_to_4_min"] = lowest;
     state.counters["count_vs_radius_seeds_1_to_4_max"] = highest;
+    state.counters["runs_seeds_1_to_4_min"] = double(fewest_runs);
+    state.counters["runs_seeds_1_to_4_max"] = double(most_runs);
   }
 }
 
@@ -783,6 +788,13 @@ void register_cases()
   for(const char* name : {"strips_1e-7", "strips_1e-5"})
     add(std::string("count_mode/") + name, [name](benchmark::State& s) { count_mode_case(s, name); })
         ->Arg(10000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  // surfaces that are neither a plane nor a line at the scale of d, where the count does not go as
+  // d^-2: stacked sheets closer than d, tubes about as wide as d
+  for(int n : {10000, 100000})
+    add("count_mode/sheets", [](benchmark::State& s) { count_mode_case(s, "sheets"); })
+        ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+  add("count_mode/tubes", [](benchmark::State& s) { count_mode_case(s, "tubes"); })
+      ->Arg(10000)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
   for(int n : {100, 150})
     add("count_search/elephant.off", [](benchmark::State& s) { count_search_case(s, "elephant.off"); })
         ->Arg(n)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
