@@ -26,15 +26,15 @@ typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::
 /// about 0.6965 area / d^2 points (the jamming density of maximal Poisson-disk sets in the plane).
 inline double distance_for(double area, double n) { return std::sqrt(0.6965 * area / n); }
 
-/// A cylinder of radius 1 and height 30, 64 cells around and `rings` along, two triangles a cell.
-inline void make_cylinder(Mesh& m, int rings)
+/// A tube along z, its axis at (x, 0): of radius `radius` and height `height`, `segments` cells around
+/// and `rings` along, two triangles a cell.
+inline void add_tube(Mesh& m, double x, double radius, double height, int segments, int rings)
 {
-  const int segments = 64;
   std::vector<Mesh::Vertex_index> v;
   for(int r = 0; r <= rings; ++r)
     for(int i = 0; i < segments; ++i) {
       const double a = 6.283185307179586 * i / segments;
-      v.push_back(m.add_vertex(Mesh::Point(std::cos(a), std::sin(a), 30. * r / rings)));
+      v.push_back(m.add_vertex(Mesh::Point(x + radius * std::cos(a), radius * std::sin(a), height * r / rings)));
     }
   for(int r = 0; r < rings; ++r)
     for(int i = 0; i < segments; ++i) {
@@ -44,6 +44,9 @@ inline void make_cylinder(Mesh& m, int rings)
       m.add_face(a, d, c);
     }
 }
+
+/// A cylinder of radius 1 and height 30, 64 cells around and `rings` along, two triangles a cell.
+inline void make_cylinder(Mesh& m, int rings) { add_tube(m, 0, 1, 30, 64, rings); }
 
 /// 2,000 strips 1 long and `width` wide, 0.002 apart in the plane z = 0, two triangles each
 inline void make_strips(Mesh& m, double width)
@@ -75,22 +78,7 @@ inline void make_sheets(Mesh& m)
 /// holding all of it, and a maximal set's count falls faster than d^-3
 inline void make_tubes(Mesh& m)
 {
-  const int segments = 24, rings = 100;
-  for(int t = 0; t < 100; ++t) {
-    std::vector<Mesh::Vertex_index> v;
-    for(int r = 0; r <= rings; ++r)
-      for(int i = 0; i < segments; ++i) {
-        const double a = 6.283185307179586 * i / segments;
-        v.push_back(m.add_vertex(Mesh::Point(0.05 * t + 0.01 * std::cos(a), 0.01 * std::sin(a), double(r) / rings)));
-      }
-    for(int r = 0; r < rings; ++r)
-      for(int i = 0; i < segments; ++i) {
-        const auto a = v[r * segments + i], b = v[r * segments + (i + 1) % segments];
-        const auto c = v[(r + 1) * segments + i], d = v[(r + 1) * segments + (i + 1) % segments];
-        m.add_face(a, b, d);
-        m.add_face(a, d, c);
-      }
-  }
+  for(int t = 0; t < 100; ++t) add_tube(m, 0.05 * t, 0.01, 1, 24, 100);
 }
 
 /// A file of CGAL's data set (`lion.off`, ...); "armadillo_loop3": armadillo.off Loop-subdivided
