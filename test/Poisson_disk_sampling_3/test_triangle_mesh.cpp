@@ -703,6 +703,69 @@ TEST(MeshSampling, FirstCountDistanceFromRandomPoints)
     EXPECT_EQ(PDS::internal::first_count_distance(elephant, a, n, planar(a, n), 0, 0), planar(a, n)) << n;
 }
 
+// Until two complete runs measure a slope, the search steps with the slope of the random points' model
+// (Count_model::slope) where it differs from the plane's, -2, beyond its spread. On 20 unit squares
+// 0.01 apart, at distances a few times their spacing, a ball holds parts of several of them and the count
+// goes about as d^-3: after a run at the first distance, the model's slope is below -2.5, and the search
+// for 10,000 points takes at most three runs at seeds 0 to 2 (four at each with the plane's slope). On
+// elephant.off, about a plane at that scale, it is the plane's, whether the run had the target or 20% less,
+// and on elephant-with-holes.off after a run 6% over the target at the search's own seed (where the
+// pairs between the two distances are few; at twice their spread rather than three times, -1.36, and a
+// run more).
+TEST(MeshSampling, FirstStepTakesTheSlopeOfTheRandomPoints)
+{
+  std::vector<Point> p;
+  std::vector<std::array<std::size_t, 3>> t;
+  for(std::size_t k = 0; k < 20; ++k) {
+    const double z = 0.01 * double(k);
+    p.insert(p.end(), {Point(0, 0, z), Point(1, 0, z), Point(1, 1, z), Point(0, 1, z)});
+    t.push_back({4 * k, 4 * k + 1, 4 * k + 2});
+    t.push_back({4 * k, 4 * k + 2, 4 * k + 3});
+  }
+  const PDS::Triangle_fragment_traits_3 sheets = PDS::internal::triangles_of_soup(p, t);
+  const double planar = std::sqrt(0.6965 * 20. / 10000.);
+  const PDS::internal::Count_model model(sheets, 20., 10000, 0);
+  const double d = model.first_distance(planar);
+  EXPECT_EQ(d, planar); // the points only raise it
+  std::vector<Point> out;
+  PDS::sample_polygon_soup(p, t, std::back_inserter(out), PDS::parameters::minimum_distance(d));
+  EXPECT_LT(double(out.size()), 0.5 * 10000); // the plane's density counted on every sheet
+  const double slope = model.slope(d, double(out.size()), 10000.);
+  EXPECT_LT(slope, -2.5);
+  EXPECT_GE(slope, -4.);
+  for(std::uint64_t seed : {0u, 1u, 2u}) {
+    out.clear();
+    PDS::Sampling_statistics stats;
+    PDS::sample_polygon_soup(p, t, std::back_inserter(out),
+                             PDS::parameters::number_of_points(10000).random_seed(seed).statistics(std::ref(stats)));
+    EXPECT_NEAR(double(out.size()), 10000., 100.);
+    EXPECT_LE(stats.number_of_runs, 3u) << seed;
+    EXPECT_EQ(stats.stopped_runs, 0u) << seed;
+  }
+  const Mesh m = load_mesh("elephant.off");
+  std::vector<Mesh::Face_index> face_of;
+  const PDS::Triangle_fragment_traits_3 elephant =
+      PDS::internal::triangles_of_mesh(m, CGAL::parameters::default_values(), face_of);
+  const double a = PDS::internal::total_area(elephant);
+  const PDS::internal::Count_model plane_like(elephant, a, 10000, 0);
+  const double e = plane_like.first_distance(std::sqrt(0.6965 * a / 10000.));
+  std::vector<Point> on_elephant;
+  PDS::sample_triangle_mesh(m, std::back_inserter(on_elephant), PDS::parameters::minimum_distance(e));
+  EXPECT_EQ(plane_like.slope(e, double(on_elephant.size()), 10000.), -2.);
+  EXPECT_EQ(plane_like.slope(e, 8000., 10000.), -2.);
+  EXPECT_EQ(PDS::internal::Count_model().slope(d, 5000., 10000.), -2.); // an empty model
+  const Mesh holes = load_mesh("elephant-with-holes.off");
+  const PDS::Triangle_fragment_traits_3 with_holes =
+      PDS::internal::triangles_of_mesh(holes, CGAL::parameters::default_values(), face_of);
+  const double h = PDS::internal::total_area(with_holes);
+  const PDS::internal::Count_model holes_model(with_holes, h, 10000, 0x3b8f0e6d2a41c957ull); // seed 0's
+  const double f = holes_model.first_distance(std::sqrt(0.6965 * h / 10000.));
+  std::vector<Point> on_holes;
+  PDS::sample_triangle_mesh(holes, std::back_inserter(on_holes), PDS::parameters::minimum_distance(f));
+  EXPECT_GT(double(on_holes.size()), 10300.);
+  EXPECT_EQ(holes_model.slope(f, double(on_holes.size()), 10000.), -2.);
+}
+
 // The random points fall on the faces in proportion to their areas: 1 and 3 here.
 TEST(MeshSampling, RandomSurfacePointsFollowTheArea)
 {

@@ -282,19 +282,19 @@ bool run_engine(const Traits& traits, double d, std::uint64_t seed, std::size_t 
   return !e.stopped;
 }
 
-/// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run uses
-/// the jamming density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2 points),
-/// unless random points on the surface say that a ball holds far less than pi d^2 of it there
-/// (`first_count_distance()`); later runs correct d with the slope of log(count) over log(d) measured
-/// between runs, and bisect the bracket of distances that gave too many and too few points when a step
-/// would leave it or the bracket stops shrinking. Once the bracket is narrower than the count's spread
-/// from run to run (small targets), the runs draw their darts from other seeds, derived from `seed`, at
-/// a distance that follows their mean count. One to three full runs, more for small targets and where
-/// the first distance is far off (runs stopped at 2n + 64 points). Runs return after their first sample
-/// where `holds_surface` says it covers the surface, as in `sample_request()`. Each run keeps its
-/// samples in a deque, whose blocks hold about its samples and no more (a vector grown by doubling held
-/// up to three times as many while it moved), and only the run that meets the target keeps them past
-/// its end (the closer runs before it are counted, not kept).
+/// Finds a minimum distance whose maximal set has `n` points within max(1%, 1 point). A first run uses the jamming
+/// density of maximal Poisson-disk sets in the plane (about 0.6965 area / d^2 points), unless random points on the
+/// surface say that a ball holds far less than pi d^2 of it there (`Count_model::first_distance()`); later runs
+/// correct d with the slope of log(count) over log(d) measured between runs (until two complete runs measure one,
+/// the slope of the random points' model, `Count_model::slope()`), and bisect the bracket of distances that gave
+/// too many and too few points when a step would leave it or the bracket stops shrinking. Once the bracket is
+/// narrower than the count's spread from run to run (small targets), the runs draw their darts from other seeds,
+/// derived from `seed`, at a distance that follows their mean count. One to three full runs, more for small targets
+/// and where the first distance is far off (runs stopped at 2n + 64 points). Runs return after their first sample
+/// where `holds_surface` says it covers the surface, as in `sample_request()`. Each run keeps its samples in a
+/// deque, whose blocks hold about its samples and no more (a vector grown by doubling held up to three times as
+/// many while it moved), and only the run that meets the target keeps them past its end (the closer runs before it
+/// are counted, not kept).
 template <class Traits>
 std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::size_t n, std::uint64_t seed,
                                                   std::size_t max_points, bool parallel, Sampling_statistics& stats,
@@ -307,6 +307,7 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
   // (the square roots apart, so that the area of a tiny surface does not underflow in the product)
   const double planar = std::sqrt(0.6965 / double(n)) * std::sqrt(area);
   double slope = -2, last_d = 0, last_n = 0;
+  bool measured = false; // whether `slope` was measured between two complete runs
   const double infinity = std::numeric_limits<double>::infinity();
   // The smallest distance the runs may take: check_distance_range(), check_distance_precision(), and
   // the distance at which area / (pi r^2) is four times the bound, and 64. The runs are not refused
@@ -321,8 +322,11 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
   const double bounded = std::sqrt(area / (4 * double(max_points) + 64)) * std::sqrt(disk_count(1, 1));
   const double lowest = (std::max)(precise, bounded);
   // the plane's distance for n points on the surface's area, unless random points on the surface say
-  // it is far too small (strips far narrower than it: see first_count_distance())
-  double d = first_count_distance(traits, area, n, planar, lowest, seed ^ 0x3b8f0e6d2a41c957ull);
+  // it is far too small (strips far narrower than it), and the slope of the first step: see
+  // Count_model (none below 100 points, where runs are cheap, nor below the smallest distance)
+  Count_model model = n >= 100 && planar >= lowest ? Count_model(traits, area, n, seed ^ 0x3b8f0e6d2a41c957ull)
+                                                   : Count_model();
+  double d = model.first_distance(planar);
   double too_many = 0, too_few = infinity;
   std::size_t complete_runs = 0, closest = 0; // the count of the complete run closest to n
   // A run stops at `stop` samples, about twice the target, or at the bound: where the first distance
@@ -396,6 +400,10 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
       if(last_n > 0 && got != last_n && d != last_d) {
         const double s = (std::log(got) - std::log(last_n)) / (std::log(d) - std::log(last_d));
         slope = (std::min)(-1., (std::max)(-3., s));
+        if(!measured) model = Count_model(); // (its points are no longer needed)
+        measured = true;
+      } else if(!measured) {
+        slope = model.slope(d, got, double(n)); // none measured yet: the model's
       }
       last_d = d;
       last_n = got;
@@ -529,12 +537,13 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///       d^2 points) or, where random points on the surface say that a ball holds far less than pi r^2 of it
 ///       (strips much narrower than the distance), a distance from them, within a quarter of the target on the
 ///       strips measured. The search takes one to three full runs where that distance is about right, more for
-///       small targets. A run stops at 2N + 64 points or the bound, so that the samples held stay at most
-///       2N + 64 (one run's: no earlier run's are kept). The runs' fragments, time and memory follow area /
-///       (pi r^2), as in a radius request: about 1.8 N on a flat surface, far less on strips narrower than r,
-///       many times N where faces overlap or lie closer than r (copies of a face each count). The search tries
-///       no distance at which it exceeds four times `maximum_number_of_points`, and 64, and refuses a target
-///       that needs one}
+///       small targets; three where the count does not go as d^-2 (sheets stacked closer than the distance),
+///       whose first step takes the slope that the random points give. A run stops at 2N + 64 points or the
+///       bound, so that the samples held stay at most 2N + 64 (one run's: no earlier run's are kept). The
+///       runs' fragments, time and memory follow area / (pi r^2), as in a radius request: about 1.8 N on a flat
+///       surface, far less on strips narrower than r, many times N where faces overlap or lie closer than r
+///       (copies of a face each count). The search tries no distance at which it exceeds four times
+///       `maximum_number_of_points`, and 64, and refuses a target that needs one}
 ///     \cgalParamType{std::size_t}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_points}

@@ -62,7 +62,10 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
   return pairs;
 }
 
-/// The first distance of a `number_of_points` search for `n` points: `d0`, the distance at which a
+/// The model of a maximal set's count as a function of d that a `number_of_points` search for `n`
+/// points starts from: random points on the surface, and their pairs within a distance.
+///
+/// `first_distance(d0)`: the first distance of the search. `d0`, the distance at which a
 /// maximal set in the plane has `n` points on the surface's area (about 0.6965 area / d0^2 points),
 /// unless random points on the surface say that it is far too small. A maximal set at distance d in
 /// the plane has about 0.6965 pi area / A_d points, where A_d = pi d^2 is the area within d of a
@@ -94,56 +97,140 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
 /// and at most 200,000: from 2,500 to 10^8 points, about 440 of their pairs lie within the distance
 /// sought, a spread of about 5% (more pairs below, fewer above).
 ///
-/// `d0` is returned below 100 points, where runs are cheap; where `d0` is below `lowest`, the
-/// smallest distance the search may take, which raises `d0` to it or refuses it (near the
-/// coordinates' precision, the grid of the points would scan boxes of cells far wider than `d0`:
-/// 17 s for 10^6 points on a triangle 10^-13 wide at (1, 1, 1)); and where the grid of the points
-/// cannot hold a distance.
+/// `slope(d, got, n)`: after a complete run at `d` that gave `got` points, the slope of log(count) over
+/// log(d) that the model gives from `d` to the distance where its count is n (the pairs within it are
+/// those within `d` times got / n), where it differs from the plane's, -2, by more than three times
+/// its spread (the pairs between the two distances vary at least as their square root; at twice, the
+/// steps on two meshes of CGAL's data set took slopes near -1.4 where their counts went as d^-2, and
+/// a run more: `benchmark/survey_count_mode`, change 54), clamped to [-4, -1]; otherwise -2. The search takes it for its first step, before two runs measure one. On 20 sheets 0.01
+/// apart, where d is a few times their spacing, a ball holds parts of several sheets and the count goes
+/// about as d^-3; on tubes about as wide as d, where a sample goes from holding part of a ring to
+/// holding all of it, it falls faster (`count_mode/sheets` and `count_mode/tubes` in
+/// benchmark/README.md, change 54; test `MeshSampling.FirstStepTakesTheSlopeOfTheRandomPoints`). The
+/// model's slope is not exact either (its count follows the mean of A_d, see above), and where the
+/// first run is far off the step can still miss the target by more than 1%: the search takes three runs
+/// on the sheets at every seed measured, two or three on the tubes (with the plane's step, four on the
+/// sheets at 10,000 points, three at 100,000, three or four on the tubes). On a surface that is about a
+/// plane at the scale of d the model's slope is the plane's within its spread, and the step is the
+/// plane's.
+///
+/// The model is empty (`first_distance(d0)` is `d0`, `slope()` is -2) where `random_sample()` refused
+/// most darts, and a distance that the grid of the points cannot hold leaves both their defaults.
+/// `first_count_distance()` is `d0` below 100 points, where runs are cheap, and where `d0` is below
+/// `lowest`, the smallest distance the search may take, which raises `d0` to it or refuses it (near
+/// the coordinates' precision, the grid of the points would scan boxes of cells far wider than `d0`:
+/// 17 s for 10^6 points on a triangle 10^-13 wide at (1, 1, 1)); the search makes no model then.
+class Count_model
+{
+public:
+  /// an empty model
+  Count_model() = default;
+
+  /// draws the random points: 20 sqrt(n), at least 1,000 and at most 200,000
+  template <class Traits>
+  Count_model(const Traits& traits, double area, std::size_t n, std::uint64_t seed)
+  {
+    const double points = (std::min)(200000., (std::max)(1000., 20 * std::sqrt(double(n))));
+    xyz_ = random_surface_points(traits, area, std::size_t(points), seed);
+    const double m = double(xyz_.size() / 3);
+    if(m < 500) { // (a model whose random_sample() refuses most darts)
+      xyz_.clear();
+      return;
+    }
+    // the pairs within d that make the estimated count n with the plane's constant
+    target_ = plane * (m * (m - 1) / 2) / double(n);
+    limit_ = std::size_t(8 * target_) + 16;
+  }
+
+  double first_distance(double d0) const
+  {
+    if(xyz_.empty()) return d0;
+    try {
+      if(pairs(d0, limit_) >= target_ / 2) return d0;
+      const double d = distance_for_pairs(d0, target_);
+      if(d == 0) return d0;
+      // The plane's constant holds where the surface is two-dimensional at the scale of d. Where it
+      // is a line (strips far narrower than d and farther apart than it), the pairs within 2 d are
+      // twice those within d, not four times, and the constant is the line's; in between, it is
+      // interpolated by the exponent D of that ratio, and the distance follows the pairs as d^D:
+      // fewer pairs by the constant's ratio, c / plane, at a distance smaller by (c / plane)^(1 / D).
+      // (A search for those pairs goes farther where part of them do not follow d^D: with strips and
+      // a part much smaller than d that holds 0.4 of the pairs, whose pairs stay, the strips' count
+      // reckoned at the distance it finds is 2.4 n, at the step's 1.7 n.)
+      const double dimension =
+          (std::min)(2., (std::max)(1., std::log2(pairs(2 * d, limit_) / pairs(d, limit_))));
+      const double c = line + (dimension - 1) * (plane - line);
+      return (std::max)(d0, d * std::pow(c / plane, 1 / dimension));
+    } catch(const Invalid_input&) {
+      return d0; // a distance too small for the grid of the points: the search's own checks tell
+    }
+  }
+
+  double slope(double d, double got, double n) const
+  {
+    if(xyz_.empty() || !(got > 0) || got == n) return -2;
+    try {
+      // (counted up to eight times the limit: a run far from the target, on a surface where the
+      // first distance was kept, can have more pairs than the limit within its distance)
+      const double at = pairs(d, 8 * limit_), want = at * got / n;
+      if(at > double(8 * limit_) || !(want >= 16) || want > double(4 * limit_)) return -2;
+      const double to = distance_for_pairs(d, want);
+      if(to == 0 || to == d) return -2;
+      const double between = std::abs(pairs(to, 8 * limit_) - at);
+      const double s = std::log(n / got) / std::log(to / d);
+      if(!(between >= 16) || !(std::abs(s + 2) > 3 * std::abs(s) / std::sqrt(between))) return -2;
+      return (std::min)(-1., (std::max)(-4., s));
+    } catch(const Invalid_input&) {
+      return -2;
+    }
+  }
+
+private:
+  // the density constants of the plane (0.6965 pi) and of a line (2 / 1.3376)
+  static constexpr double plane = 0.6965 * 3.141592653589793, line = 2 / 1.3376;
+
+  double pairs(double d, std::size_t limit) const { return double(close_pairs(xyz_, d, limit)); }
+
+  // The distance, to a factor of 2^(1/1024), from which `want` pairs or more lie within it, searched
+  // from `d` by factors of 2 (at most 2^60) and then by bisection in log d; 0 where none was found.
+  // `want` is at most half of the limit the pairs are counted to.
+  double distance_for_pairs(double d, double want) const
+  {
+    const std::size_t limit = std::size_t(2 * want) + 16;
+    double lo = d, hi = d;
+    const bool up = pairs(d, limit) < want;
+    for(int k = 0;; ++k) {
+      if(k == 60) return 0;
+      if(up) {
+        hi = 2 * lo;
+        if(pairs(hi, limit) >= want) break;
+        lo = hi;
+      } else {
+        lo = hi / 2;
+        if(pairs(lo, limit) < want) break;
+        hi = lo;
+      }
+    }
+    for(int k = 0; k < 10; ++k) {
+      const double mid = std::sqrt(lo) * std::sqrt(hi);
+      if(pairs(mid, limit) < want) lo = mid;
+      else hi = mid;
+    }
+    return std::sqrt(lo) * std::sqrt(hi);
+  }
+
+  std::vector<double> xyz_; // x, y, z in a row
+  double target_ = 0;
+  std::size_t limit_ = 0;
+};
+
+/// the first distance of a search, from a model made for it (see `Count_model`)
 template <class Traits>
 double first_count_distance(const Traits& traits, double area, std::size_t n, double d0, double lowest,
                             std::uint64_t seed)
 {
   if(n < 100 || !(d0 >= lowest)) return d0;
-  const double points = (std::min)(200000., (std::max)(1000., 20 * std::sqrt(double(n))));
-  const std::vector<double> xyz = random_surface_points(traits, area, std::size_t(points), seed);
-  const double m = double(xyz.size() / 3);
-  if(m < 500) return d0; // (a model whose random_sample() refuses most darts)
-  // the density constants of the plane (0.6965 pi) and of a line (2 / 1.3376); the pairs within d
-  // that make the estimated count n with the plane's are `target`
-  const double plane = 0.6965 * 3.141592653589793, line = 2 / 1.3376, all = m * (m - 1) / 2;
-  const double target = plane * all / double(n);
-  const std::size_t limit = std::size_t(8 * target) + 16;
-  try {
-    auto pairs = [&](double d) { return double(close_pairs(xyz, d, limit)); };
-    if(pairs(d0) >= target / 2) return d0;
-    // a bracket [lo, hi] with fewer pairs than the target at lo and as many or more at hi
-    double lo = d0, hi = d0;
-    for(int k = 0;; ++k) {
-      if(k == 60) return d0;
-      hi = 2 * lo;
-      if(pairs(hi) >= target) break;
-      lo = hi;
-    }
-    for(int k = 0; k < 10; ++k) {
-      const double mid = std::sqrt(lo) * std::sqrt(hi);
-      if(pairs(mid) < target) lo = mid;
-      else hi = mid;
-    }
-    const double d = std::sqrt(lo) * std::sqrt(hi);
-    // The plane's constant holds where the surface is two-dimensional at the scale of d. Where it is
-    // a line (strips far narrower than d and farther apart than it), the pairs within 2 d are twice
-    // those within d, not four times, and the constant is the line's; in between, it is interpolated
-    // by the exponent D of that ratio, and the distance follows the pairs as d^D: fewer pairs by the
-    // constant's ratio, c / plane, at a distance smaller by (c / plane)^(1 / D). (A search for
-    // those pairs goes farther where part of them do not follow d^D: with strips and a part much
-    // smaller than d that holds 0.4 of the pairs, whose pairs stay, the strips' count reckoned at the
-    // distance it finds is 2.4 n, at the step's 1.7 n.)
-    const double dimension = (std::min)(2., (std::max)(1., std::log2(pairs(2 * d) / pairs(d))));
-    const double c = line + (dimension - 1) * (plane - line);
-    return (std::max)(d0, d * std::pow(c / plane, 1 / dimension));
-  } catch(const Invalid_input&) {
-    return d0; // a distance too small for the grid of the points: the search's own checks tell
-  }
+  return Count_model(traits, area, n, seed).first_distance(d0);
 }
 
 } // namespace internal
