@@ -399,6 +399,7 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
       else too_few = (std::min)(too_few, d);
       if(last_n > 0 && got != last_n && d != last_d) {
         const double s = (std::log(got) - std::log(last_n)) / (std::log(d) - std::log(last_d));
+        // (within [-3, -1], as before the model's slope, which may reach -4, was taken for the first step)
         slope = (std::min)(-1., (std::max)(-3., s));
         if(!measured) model = Count_model(); // (its points are no longer needed)
         measured = true;
@@ -537,8 +538,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///       d^2 points) or, where random points on the surface say that a ball holds far less than pi r^2 of it
 ///       (strips much narrower than the distance), a distance from them, within a quarter of the target on the
 ///       strips measured. The search takes one to three full runs where that distance is about right, more for
-///       small targets; three where the count does not go as d^-2 (sheets stacked closer than the distance),
-///       whose first step takes the slope that the random points give. A run stops at 2N + 64 points or the
+///       small targets; two or three where the count does not go as d^-2 (sheets stacked closer than the
+///       distance), whose first step takes the slope that the random points give. A run stops at 2N + 64 points or the
 ///       bound, so that the samples held stay at most 2N + 64 (one run's: no earlier run's are kept). The
 ///       runs' fragments, time and memory follow area / (pi r^2), as in a radius request: about 1.8 N on a flat
 ///       surface, far less on strips narrower than r, many times N where faces overlap or lie closer than r

@@ -99,20 +99,24 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
 ///
 /// `slope(d, got, n)`: after a complete run at `d` that gave `got` points, the slope of log(count) over
 /// log(d) that the model gives from `d` to the distance where its count is n (the pairs within it are
-/// those within `d` times got / n), where it differs from the plane's, -2, by more than three times
-/// its spread (the pairs between the two distances vary at least as their square root; at twice, the
-/// steps on two meshes of CGAL's data set took slopes near -1.4 where their counts went as d^-2, and
-/// a run more: `benchmark/survey_count_mode`, change 54), clamped to [-4, -1]; otherwise -2. The search takes it for its first step, before two runs measure one. On 20 sheets 0.01
-/// apart, where d is a few times their spacing, a ball holds parts of several sheets and the count goes
-/// about as d^-3; on tubes about as wide as d, where a sample goes from holding part of a ring to
-/// holding all of it, it falls faster (`count_mode/sheets` and `count_mode/tubes` in
-/// benchmark/README.md, change 54; test `MeshSampling.FirstStepTakesTheSlopeOfTheRandomPoints`). The
-/// model's slope is not exact either (its count follows the mean of A_d, see above), and where the
-/// first run is far off the step can still miss the target by more than 1%: the search takes three runs
-/// on the sheets at every seed measured, two or three on the tubes (with the plane's step, four on the
-/// sheets at 10,000 points, three at 100,000, three or four on the tubes). On a surface that is about a
-/// plane at the scale of d the model's slope is the plane's within its spread, and the step is the
-/// plane's.
+/// those within `d` times got / n), where it differs from the plane's, -2, by more than three times its
+/// spread (the pairs between the two distances vary at least as their square root; at twice, the steps
+/// on two meshes of CGAL's data set took slopes near -1.4 where their counts went as d^-2, and a run
+/// more: `benchmark/survey_count_mode`, change 54), clamped to [-4, -1]; otherwise -2, and -2 where the
+/// pairs within `d` are beyond eight times the ones counted for the first distance, or the pairs sought
+/// or those between the two distances fewer than 16 (with about 440 pairs within the distance of the
+/// target, a run within about 4% of it). The search takes it until two complete runs measure a slope
+/// (for its first step, and for the step after a complete run that follows stopped ones); it keeps the
+/// model's points, 24 bytes each, until then. On 20 sheets 0.01 apart, where d is a few times their
+/// spacing, a ball holds parts of several sheets and the count goes about as d^-3; on tubes about as
+/// wide as d, where a sample goes from holding part of a ring to holding all of it, it falls faster
+/// (`count_mode/sheets` and `count_mode/tubes` in benchmark/README.md, change 54; test
+/// `MeshSampling.FirstStepTakesTheSlopeOfTheRandomPoints`). The model's slope is not exact either (its
+/// count follows the mean of A_d, see above), and where the first run is far off the step can still
+/// miss the target by more than 1%: the search takes three runs on the sheets at every seed measured,
+/// two or three on the tubes (with the plane's step, four on the sheets at 10,000 points, three at
+/// 100,000, three or four on the tubes). On a surface that is about a plane at the scale of d the
+/// model's slope is the plane's within its spread, and the step is the plane's.
 ///
 /// The model is empty (`first_distance(d0)` is `d0`, `slope()` is -2) where `random_sample()` refused
 /// most darts, and a distance that the grid of the points cannot hold leaves both their defaults.
@@ -224,7 +228,8 @@ private:
   std::size_t limit_ = 0;
 };
 
-/// the first distance of a search, from a model made for it (see `Count_model`)
+/// the first distance of a search, from a model made for it (see `Count_model`); the search makes its
+/// model itself, and the tests call this
 template <class Traits>
 double first_count_distance(const Traits& traits, double area, std::size_t n, double d0, double lowest,
                             std::uint64_t seed)
