@@ -324,8 +324,7 @@ std::deque<typename Traits::Sample> run_for_count(const Traits& traits, std::siz
   // the plane's distance for n points on the surface's area, unless random points on the surface say
   // it is far too small (strips far narrower than it), and the slope of the first step: see
   // Count_model (none below 100 points, where runs are cheap, nor below the smallest distance)
-  Count_model model = n >= 100 && planar >= lowest ? Count_model(traits, area, n, seed ^ 0x3b8f0e6d2a41c957ull)
-                                                   : Count_model();
+  Count_model model = count_model(traits, area, n, planar, lowest, seed ^ 0x3b8f0e6d2a41c957ull);
   double d = model.first_distance(planar);
   double too_many = 0, too_few = infinity;
   std::size_t complete_runs = 0, closest = 0; // the count of the complete run closest to n

@@ -228,14 +228,22 @@ private:
   std::size_t limit_ = 0;
 };
 
-/// the first distance of a search, from a model made for it (see `Count_model`); the search makes its
-/// model itself, and the tests call this
+/// the model of a search for `n` points whose plane's distance is `d0`: empty below 100 points and
+/// where `d0` is below `lowest` (see `Count_model`)
+template <class Traits>
+Count_model count_model(const Traits& traits, double area, std::size_t n, double d0, double lowest,
+                        std::uint64_t seed)
+{
+  if(n < 100 || !(d0 >= lowest)) return Count_model();
+  return Count_model(traits, area, n, seed);
+}
+
+/// the first distance of a search (the search keeps its model for its first step; the tests call this)
 template <class Traits>
 double first_count_distance(const Traits& traits, double area, std::size_t n, double d0, double lowest,
                             std::uint64_t seed)
 {
-  if(n < 100 || !(d0 >= lowest)) return d0;
-  return Count_model(traits, area, n, seed).first_distance(d0);
+  return count_model(traits, area, n, d0, lowest, seed).first_distance(d0);
 }
 
 } // namespace internal
