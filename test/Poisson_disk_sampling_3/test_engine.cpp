@@ -1396,6 +1396,142 @@ TEST(TriangleFragments, LevelIsTheDepthBySizeAndCutsLeaveRoomForIt)
 // random points and reference point lie in its rows' triangles, and a ball holds it (is_covered())
 // if it holds their corners with a little room, not if one of them is outside. Needles and caps
 // (corners nearly in line), of aspect ratios up to 10^4, with D from L down to L / 30,000.
+// Clusters of small faces: on a wavy grid of 115,200 faces given in a shuffled order, with two large
+// faces beside it, at a distance where the faces' mean area is below D^2 / 64. The roots are far fewer
+// than the faces; the clusters split down to every face of positive area exactly once, each split's
+// children share their parent's area; a ball that is said to hold a cluster holds every corner of
+// its faces; a dart on a cluster falls on one of its faces, in proportion to their areas; and the
+// sampler's set is a maximal Poisson-disk set, as the certificate (on the same roots) finds it.
+TEST(TriangleFragments, ClustersOfSmallFacesTileThemAndBoundThem)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  typedef Traits::Fragment Fragment;
+  typedef Traits::Point P;
+  Random rng(41);
+  const int n = 240;
+  auto height = [](double x, double y) { return 0.1 * std::sin(7 * x) * std::cos(5 * y); };
+  std::vector<std::array<P, 3>> triangles;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      P c[4];
+      for(int k = 0; k < 4; ++k) {
+        const double x = double(i + k % 2) / n, y = double(j + k / 2) / n;
+        c[k] = P{{x, y, height(x, y)}};
+      }
+      triangles.push_back({{c[0], c[1], c[3]}});
+      triangles.push_back({{c[0], c[3], c[2]}});
+    }
+  for(std::size_t i = triangles.size(); i > 1; --i) std::swap(triangles[i - 1], triangles[rng.uniform_index(i)]);
+  triangles.push_back({{P{{2, 0, 0}}, P{{3, 0, 0}}, P{{2, 1, 0}}}});
+  triangles.push_back({{P{{3, 0, 0}}, P{{3, 1, 0}}, P{{2, 1, 0}}}});
+  Traits traits;
+  for(const auto& t : triangles) traits.add_triangle(t[0], t[1], t[2]);
+  const double d = 0.05;
+
+  std::vector<Fragment> roots;
+  traits.initial_fragments(std::back_inserter(roots), d);
+  std::size_t clusters = 0;
+  for(const Fragment& r : roots) clusters += Traits::is_cluster(r);
+  EXPECT_GT(clusters, 100u);
+  EXPECT_LT(roots.size(), triangles.size() / 4);
+
+  // each cluster down to its faces; the faces of every cluster met on the way, for the checks below
+  std::vector<int> seen(triangles.size(), 0);
+  std::vector<std::pair<Fragment, std::vector<std::uint32_t>>> expanded;
+  std::function<void(const Fragment&, std::vector<std::uint32_t>&)> expand = [&](const Fragment& f,
+                                                                                  std::vector<std::uint32_t>& faces) {
+    if(!Traits::is_cluster(f)) {
+      EXPECT_EQ(f.piece, 0u);
+      EXPECT_EQ(traits.area(f), traits.triangle_area(f.face));
+      ++seen[f.face];
+      faces.push_back(f.face);
+      return;
+    }
+    EXPECT_EQ(traits.level(f), 0);
+    std::vector<Fragment> children;
+    traits.split(f, std::back_inserter(children));
+    EXPECT_GE(children.size(), 2u);
+    double sum = 0;
+    std::vector<std::uint32_t> mine;
+    for(const Fragment& c : children) {
+      sum += traits.area(c);
+      EXPECT_LE(traits.area(c), traits.area(f));
+      expand(c, mine);
+    }
+    EXPECT_NEAR(sum, traits.area(f), 1e-6 * traits.area(f));
+    faces.insert(faces.end(), mine.begin(), mine.end());
+    expanded.emplace_back(f, mine);
+  };
+  double total = 0;
+  for(const Fragment& r : roots) {
+    std::vector<std::uint32_t> faces;
+    expand(r, faces);
+    total += traits.area(r);
+  }
+  double area = 0;
+  for(std::size_t i = 0; i < triangles.size(); ++i) {
+    area += traits.triangle_area(std::uint32_t(i));
+    EXPECT_EQ(seen[i], 1) << "face " << i;
+  }
+  EXPECT_NEAR(total, area, 1e-9 * area);
+  ASSERT_GT(expanded.size(), clusters);
+
+  // balls around points near a cluster: one that is said to hold it holds every corner of its faces
+  int covered = 0, tested = 0;
+  for(const auto& e : expanded) {
+    const Fragment& f = e.first;
+    const P ref = traits.reference_point(f);
+    for(int k = 0; k < 4; ++k, ++tested) {
+      P c;
+      for(int j = 0; j < 3; ++j) c[j] = ref[j] + d * (rng.uniform() - 0.5);
+      if(!traits.is_covered(f, c, d)) continue;
+      ++covered;
+      for(std::uint32_t face : e.second)
+        for(const P& q : triangles[face])
+          ASSERT_LE(std::hypot(q[0] - c[0], q[1] - c[1], q[2] - c[2]), d) << "a corner outside the ball";
+    }
+  }
+  EXPECT_GT(covered, tested / 10);
+  EXPECT_LT(covered, tested);
+
+  // darts on the largest cluster's faces, in proportion to their areas (within 5 standard deviations)
+  const auto largest = std::max_element(expanded.begin(), expanded.end(), [](const auto& a, const auto& b) {
+    return a.second.size() < b.second.size();
+  });
+  ASSERT_GE(largest->second.size(), 8u);
+  std::map<std::uint32_t, int> hits;
+  const int darts = 40000;
+  PDS::internal::Stream stream(7);
+  for(int k = 0; k < darts; ++k) {
+    const auto s = traits.random_sample(largest->first, stream);
+    ASSERT_TRUE(s);
+    ++hits[s->face];
+  }
+  double cluster_area = 0;
+  for(std::uint32_t face : largest->second) cluster_area += traits.triangle_area(face);
+  for(const auto& h : hits)
+    ASSERT_TRUE(std::find(largest->second.begin(), largest->second.end(), h.first) != largest->second.end());
+  for(std::uint32_t face : largest->second) {
+    const double p = traits.triangle_area(face) / cluster_area, expected = darts * p;
+    EXPECT_NEAR(hits[face], expected, 5 * std::sqrt(expected * (1 - p)) + 1) << "face " << face;
+  }
+
+  // the sampler on these roots, certified on the same roots
+  std::vector<Traits::Sample> samples;
+  PDS::Sampling_statistics stats;
+  PDS::sample_surface(traits, std::back_inserter(samples), PDS::parameters::minimum_distance(d).statistics(std::ref(stats)));
+  std::vector<P> points;
+  std::vector<CGAL::Simple_cartesian<double>::Point_3> cgal_points;
+  for(const auto& s : samples) {
+    points.push_back(s.point);
+    cgal_points.emplace_back(s.point[0], s.point[1], s.point[2]);
+  }
+  EXPECT_TRUE(PDS::is_poisson_disk_set(cgal_points, d));
+  EXPECT_TRUE(PDS::is_maximal_on_surface(traits, points, d));
+  EXPECT_EQ(stats.dropped_fragments, 0u);
+  EXPECT_GT(double(samples.size()), 0.6 * area / (d * d));
+}
+
 TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;

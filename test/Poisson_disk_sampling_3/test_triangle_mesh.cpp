@@ -8,6 +8,7 @@
 #include "test_support.h"
 
 #include <CGAL/Polyhedron_3.h>
+#include <boost/iterator/function_output_iterator.hpp>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
@@ -60,11 +61,22 @@ TEST_P(MeshSampling, IsMaximalPoissonDiskSet)
   EXPECT_GE(stats.darts, points.size());
   EXPECT_LE(stats.darts_on_covered_fragments, stats.darts - points.size());
   EXPECT_GT(stats.darts_on_covered_fragments, 0u);
-  // every face of positive area starts active; a dart removes one fragment and adds at most four
-  std::size_t positive = 0;
-  for(auto f : faces(m)) positive += PMP::face_area(f, m) > 0;
-  EXPECT_GE(stats.peak_active_fragments, positive);
-  EXPECT_LE(stats.peak_active_fragments, positive + 3 * stats.darts);
+  // every root starts active: the faces of positive area, or where they are much smaller than d
+  // clusters of them; a dart removes one fragment and adds at most four, or a cluster's children
+  // (the clusters and faces under it: fewer than twice its faces in all)
+  std::size_t positive = 0, roots = 0;
+  PDS::Triangle_fragment_traits_3 traits;
+  for(auto f : faces(m)) {
+    positive += PMP::face_area(f, m) > 0;
+    std::array<PDS::Triangle_fragment_traits_3::Point, 3> q;
+    int j = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) q[j++] = {{m.point(v).x(), m.point(v).y(), m.point(v).z()}};
+    traits.add_triangle(q[0], q[1], q[2]);
+  }
+  traits.initial_fragments(boost::make_function_output_iterator([&](const auto&) { ++roots; }), d);
+  EXPECT_LE(roots, 2 * positive); // (a long thin face: up to two blocks of rows)
+  EXPECT_GE(stats.peak_active_fragments, roots);
+  EXPECT_LE(stats.peak_active_fragments, 2 * positive + 3 * stats.darts);
   expect_maximal_poisson_disk_set(m, points, d);
 }
 

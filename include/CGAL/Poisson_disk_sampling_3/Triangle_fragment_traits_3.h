@@ -5,6 +5,7 @@
 #define CGAL_POISSON_DISK_SAMPLING_3_TRIANGLE_FRAGMENT_TRAITS_3_H
 
 #include <CGAL/Poisson_disk_sampling_3/exceptions.h>
+#include <CGAL/Poisson_disk_sampling_3/internal/Face_clusters.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/Triangle_in_ball_union.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
@@ -13,9 +14,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -87,6 +91,20 @@ namespace Poisson_disk_sampling_3 {
 /// a fragment instead of the quarters of a subdivision: on lion.off at about one million points, 6.2
 /// darts per sample instead of 8.0, and 1.87 fragments active per sample at the peak instead of 2.34
 /// (see `benchmark/README.md`, change 38).
+///
+/// Clusters of small faces: where the faces are much smaller than D (their mean area at most D^2 / 64),
+/// a dart per face would cost hundreds of darts a sample, each finding its face covered.
+/// `initial_fragments(out, D)` then
+/// writes clusters: the faces whose reach (the largest distance from the centroid to a corner) is at
+/// most D / 4, and whose centroids lie in one cell of an octree at most D / 2 wide, sorted along a
+/// Morton curve (`internal/Face_clusters.h`, made once and shared by copies of the model). A dart on
+/// a cluster (`is_cluster()`) draws one of its faces in proportion to its area (to within 2^-20 of it:
+/// the areas are integers in units of 2^-52 of the surface's), then a point on it. A ball holds a
+/// cluster when it holds a ball around the cell's centre that holds every face of it (the cell's half
+/// diagonal, plus the faces' largest reach, plus a bound on rounding); `refine()` and `split()` give a
+/// cluster's children, the cells one level down (a face alone as its whole face), and the union test
+/// is not tried on clusters. The other faces are roots as above. The index costs a sort of the faces,
+/// made the first time a distance needs it (see design.md, "Clusters of small faces").
 ///
 /// `sample_triangle_mesh()` and `sample_polygon_soup()` build this model; use it directly with
 /// `sample_surface()` to sample triangles from another source.
@@ -175,6 +193,8 @@ public:
     if(f.area > 0)
       position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
     faces_.push_back(f);
+    if(f.area > 0) ++positive_faces_, area_sum_ += f.area;
+    if(clusters_.use_count() != 1 || clusters_->built) clusters_ = std::make_shared<Clusters>();
     if(thin_normal[0] != 0 || thin_normal[1] != 0 || thin_normal[2] != 0)
       thin_face_normals_.emplace_back(std::uint32_t(faces_.size() - 1), thin_normal);
     return std::uint32_t(faces_.size() - 1);
@@ -239,39 +259,50 @@ public:
   }
 
   /// Optional operation of `SurfaceFragmentTraits_3`: the root pieces for the minimum distance
-  /// `minimum_distance`, which tile the triangles of positive area: whole triangles, and for the long
-  /// thin ones one or two blocks of rows (see the class description): at most two per triangle. The
-  /// engine and the maximality certificate use it.
+  /// `minimum_distance`, which tile the triangles of positive area: whole triangles, for the long
+  /// thin ones one or two blocks of rows (see "Long thin triangles"), at most two per triangle, and
+  /// where the faces are much smaller than the distance, clusters of them (see "Clusters of small
+  /// faces"). The engine and the maximality certificate use it.
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const
   {
-    for(std::uint32_t i = 0; i < faces_.size(); ++i) {
-      const Face& f = faces_[i];
-      if(!(f.area > 0)) continue;
-      const int k = cut_level(f, minimum_distance);
-      if(k == 0) {
-        *out++ = make_fragment(i, 0);
+    const internal::Face_clusters* c = clusters_for(minimum_distance);
+    if(c == nullptr) {
+      for(std::uint32_t i = 0; i < faces_.size(); ++i)
+        if(faces_[i].area > 0) face_roots(i, minimum_distance, out);
+      return out;
+    }
+    // in the order of the curve: runs of faces that can be clustered, in one cell of the root level,
+    // and the other faces one by one
+    const double max_reach = cluster_reach * minimum_distance;
+    const int shift = 3 * (internal::Face_clusters::bits - c->level_for(cluster_side * minimum_distance));
+    auto clustered = [&](std::size_t p) { return double(c->reach(p)) <= max_reach && c->weight(p) >= cluster_weight; };
+    for(std::size_t a = 0; a < c->size();) {
+      if(!clustered(a)) {
+        face_roots(c->face(a), minimum_distance, out);
+        ++a;
         continue;
       }
-      for(int kind = f.cap ? 2 : 1; kind <= (f.cap ? 3 : 1); ++kind) {
-        double P[2], Q[2], R[2];
-        const int rows_log2 = needle(f, kind, k, P, Q, R);
-        if(rows_log2 < 0) continue; // the cap's split point is a corner: no second needle
-        // the block of all its rows, or its one row (the last row is one triangle)
-        *out++ = make_fragment(i, piece_code(kind, k, 0, 0, rows_log2));
-      }
+      std::size_t b = a + 1;
+      while(b < c->size() && clustered(b) && (c->code(b) >> shift) == (c->code(a) >> shift)) ++b;
+      *out++ = b - a == 1 ? make_fragment(c->face(a), 0) : make_cluster(a, b, c->max_reach(a, b));
+      a = b;
     }
     return out;
   }
 
   /// whether `f` is a block of rows of a long thin face (a trapezoid, see "Long thin triangles") rather
   /// than a triangle
-  static bool is_block(const Fragment& f) { return (f.piece >> 20) != 0; }
+  static bool is_block(const Fragment& f) { return (f.piece >> 20 & 15) != 0; }
+
+  /// whether `f` is a cluster of small faces (see "Clusters of small faces") rather than a triangle
+  static bool is_cluster(const Fragment& f) { return f.piece == cluster_piece; }
 
   /// area of a fragment: its face's times the share of its piece and of its triangle in the piece
   /// (a child of the subdivision has a quarter of its parent's)
   double area(const Fragment& f) const
   {
+    if(is_cluster(f)) return clusters().area(f.face, cluster_end(f));
     const Face& face = faces_[f.face];
     const double det = double(f.e[0][0]) * f.e[1][1] - double(f.e[1][0]) * f.e[0][1];
     double a = face.area * std::abs(det) * internal::power_of_half(2 * std::size_t(f.level));
@@ -289,6 +320,10 @@ public:
   template <class RandomGenerator>
   std::optional<Sample> random_sample(const Fragment& f, RandomGenerator& rng) const
   {
+    if(is_cluster(f)) { // a face in proportion to its area, then a point on it
+      const internal::Face_clusters& c = clusters();
+      return random_sample(make_fragment(c.face(c.pick(f.face, cluster_end(f), rng.uniform())), 0), rng);
+    }
     double a = rng.uniform(), b = rng.uniform();
     if(is_block(f)) return block_point(f, a, b);
     if(a + b > 1) { a = 1 - a; b = 1 - b; }
@@ -306,9 +341,10 @@ public:
   /// the point of a sample
   const Point& point(const Sample& s) const { return s.point; }
 
-  /// the centroid of the fragment
+  /// the centroid of the fragment; of a cluster, the centroid of its middle face
   Point reference_point(const Fragment& f) const
   {
+    if(is_cluster(f)) return reference_point(make_fragment(clusters().face((f.face + cluster_end(f)) / 2), 0));
     if(is_block(f)) return block_point(f, 0.5, 0.5).point;
     const double w = unit(f);
     std::array<double, 2> uv{{f.u + w * (f.e[0][0] + f.e[1][0]) / 3, f.v + w * (f.e[0][1] + f.e[1][1]) / 3}};
@@ -321,6 +357,7 @@ public:
   /// to the face's first corner: see `local_error()`)
   bool is_covered(const Fragment& f, const Point& center, double radius) const
   {
+    if(is_cluster(f)) return cluster_is_covered(f, center, radius);
     const Face& face = faces_[f.face];
     // negative: no squared distance is below it
     const double r2 = covering_squared_radius(radius, local_error(face, radius));
@@ -342,6 +379,7 @@ public:
   template <class PointRange>
   bool is_covered_by_union(const Fragment& f, const PointRange& centers, double radius) const
   {
+    if(is_cluster(f)) return false; // (split, its faces get the test)
     const Face& face = faces_[f.face];
     // local_error() bounds each coordinate; twice it bounds the distance
     const double error = 2 * local_error(face, radius);
@@ -372,6 +410,7 @@ public:
   /// of the face's extent, within the margin of `is_covered()`.
   int level(const Fragment& f) const
   {
+    if(is_cluster(f)) return 0;
     if(is_block(f)) return piece_k(f) - Piece(f.piece).m;
     return int(f.level) + piece_k(f) - lattice_excess(f);
   }
@@ -380,6 +419,7 @@ public:
   /// reads (the face's record) into the cache, without waiting. A hint: it changes no result.
   void prefetch(const Fragment& f) const
   {
+    if(is_cluster(f)) return clusters().prefetch(f.face);
     internal::prefetch_object(&faces_[f.face]); // 88 bytes: two or three cache lines
   }
 
@@ -388,6 +428,10 @@ public:
   OutputIterator split(const Fragment& f, OutputIterator out) const
   {
     CGAL_precondition(f.level < 63);
+    if(is_cluster(f)) {
+      cluster_children(f, [&](const Fragment& c) { *out++ = c; });
+      return out;
+    }
     if(is_block(f)) {
       Fragment halves[4];
       const int n = block_halves(f, halves);
@@ -410,6 +454,16 @@ public:
               OutputIterator children) const
   {
     if(f.piece == 0) return refine(f, Whole_face(), near, around, radius, children);
+    if(is_cluster(f)) { // (a face alone is tested as the cluster of its own cell: no read of its record)
+      const internal::Face_clusters& c = clusters();
+      if(covers_range(near, f.face, cluster_end(f), f.v, radius)) return true;
+      c.children(f.face, cluster_end(f), [&](std::size_t a, std::size_t b) {
+        const double reach = b - a == 1 ? double(c.reach(a)) : c.max_reach(a, b);
+        if(!covers_range(near, a, b, reach, radius))
+          *children++ = b - a == 1 ? make_fragment(c.face(a), 0) : make_cluster(a, b, reach);
+      });
+      return false;
+    }
     if(is_block(f)) return refine_block(f, near, radius, children);
     return refine(f, frame(faces_[f.face], f.piece), near, around, radius, children);
   }
@@ -417,6 +471,106 @@ public:
   /// @}
 
 private:
+  // Clusters of small faces (see the class description): faces whose reach (the largest distance from
+  // the centroid to a corner) is at most a quarter of D are clustered, in cells of the root level at
+  // most D / 2 across, where the faces' mean area is at most D^2 / 16; faces of less than 2^20 units
+  // of their weight (2^-32 of the surface's area) stay single, so that a weight rounds by at most 2^-20
+  // of it.
+  static constexpr double cluster_reach = 0.25, cluster_side = 0.5, cluster_mean_area = 1.0 / 64;
+  static constexpr std::uint64_t cluster_weight = std::uint64_t(1) << 20;
+  static constexpr std::uint32_t cluster_piece = std::uint32_t(1) << 24; // piece of a cluster
+  // A cluster: its positions [face, u) in the index, and v the largest reach of its faces.
+  static Fragment make_cluster(std::size_t a, std::size_t b, double reach)
+  {
+    Fragment f = make_fragment(std::uint32_t(a), cluster_piece);
+    f.u = double(b);
+    f.v = reach;
+    f.e[0][0] = f.e[1][1] = 0;
+    return f;
+  }
+  static std::size_t cluster_end(const Fragment& f) { return std::size_t(f.u); }
+  const internal::Face_clusters& clusters() const { return clusters_->index; }
+
+  // the index of the clusters if the faces are small enough at distance d to cluster them (made then)
+  const internal::Face_clusters* clusters_for(double d) const
+  {
+    if(!clusters_ || positive_faces_ < 64 || !(area_sum_ <= cluster_mean_area * d * d * double(positive_faces_)))
+      return nullptr;
+    Clusters& c = *clusters_;
+    std::call_once(c.once, [this, &c] {
+      c.index.build(
+          faces_.size(),
+          [this](std::size_t i, Point& centroid, double& reach) {
+            const Face& f = faces_[i];
+            // the centroid relative to v0, then its distance to each corner; a distance rounds by a
+            // few eps of itself, and the centroid by eps of |v0| + the face's extent, which
+            // position_error() bounds (the index's slack)
+            const Point g{{(f.e1[0] + f.e2[0]) / 3, (f.e1[1] + f.e2[1]) / 3, (f.e1[2] + f.e2[2]) / 3}};
+            reach = (std::max)({length(g), distance(f.e1, g), distance(f.e2, g)}) * (1 + 0x1.0p-40);
+            for(int j = 0; j < 3; ++j) centroid[j] = f.v0[j] + g[j];
+            return f.area;
+          },
+          2 * position_error_);
+      c.built = true;
+    });
+    return &c.index;
+  }
+
+  // true only if the ball of `radius` around `center` holds the ball that holds the cluster's faces,
+  // rounding included
+  bool cluster_is_covered(const Fragment& f, const Point& center, double radius) const
+  {
+    const Point* c = &center;
+    return covers_range(Points_view{c, c + 1}, f.face, cluster_end(f), f.v, radius);
+  }
+  // true only if the ball of `radius` around some point of `centers` holds the ball that holds the
+  // faces at positions [a, b) of the index, whose reach is at most `reach`, rounding included
+  template <class PointRange>
+  bool covers_range(const PointRange& centers, std::size_t a, std::size_t b, double reach, double radius) const
+  {
+    const internal::Face_clusters& c = clusters();
+    Point m;
+    double r;
+    c.bounding_ball(a, b, reach, m, r);
+    const double room = radius - r - 4 * c.slack();
+    if(!(room > 0)) return false;
+    const double room2 = room * room * (1 - 16 * std::numeric_limits<double>::epsilon());
+    for(const auto& x : centers)
+      if(squared_distance(x, m) <= room2) return true;
+    return false;
+  }
+
+  // calls put() with each child of a cluster: the clusters of the cells one level down, a face alone
+  // as its whole face
+  template <class Put>
+  void cluster_children(const Fragment& f, const Put& put) const
+  {
+    const internal::Face_clusters& c = clusters();
+    c.children(f.face, cluster_end(f), [&](std::size_t a, std::size_t b) {
+      put(b - a == 1 ? make_fragment(c.face(a), 0) : make_cluster(a, b, c.max_reach(a, b)));
+    });
+  }
+
+  // writes the roots of face i at distance d: the whole face, or its blocks of rows (see "Long thin
+  // triangles")
+  template <class OutputIterator>
+  void face_roots(std::uint32_t i, double d, OutputIterator& out) const
+  {
+    const Face& f = faces_[i];
+    const int k = cut_level(f, d);
+    if(k == 0) {
+      *out++ = make_fragment(i, 0);
+      return;
+    }
+    for(int kind = f.cap ? 2 : 1; kind <= (f.cap ? 3 : 1); ++kind) {
+      double P[2], Q[2], R[2];
+      const int rows_log2 = needle(f, kind, k, P, Q, R);
+      if(rows_log2 < 0) continue; // the cap's split point is a corner: no second needle
+      // the block of all its rows, or its one row (the last row is one triangle)
+      *out++ = make_fragment(i, piece_code(kind, k, 0, 0, rows_log2));
+    }
+  }
+
   // the k of f's piece: its rows are 2^k (a cap's split point a multiple of 2^-k); 0 for a whole face
   static int piece_k(const Fragment& f) { return f.piece == 0 ? 0 : Piece(f.piece).k; }
 
@@ -1148,6 +1302,18 @@ private:
     const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
     return x * x + y * y + z * z;
   }
+
+  // the index of the clusters of small faces, made when a distance first needs it (see "Clusters of
+  // small faces"); copies of the model share it, and adding a triangle makes a new one
+  struct Clusters
+  {
+    std::once_flag once;
+    std::atomic<bool> built{false};
+    internal::Face_clusters index;
+  };
+  std::shared_ptr<Clusters> clusters_ = std::make_shared<Clusters>();
+  double area_sum_ = 0;          // the faces' areas, summed in the order they were added
+  std::size_t positive_faces_ = 0; // the faces of positive area
 
   std::vector<Face> faces_;
   // the normals of the faces of positive area whose edges, as rounded, are on one line, by face index
