@@ -473,7 +473,7 @@ public:
 private:
   // Clusters of small faces (see the class description): faces whose reach (the largest distance from
   // the centroid to a corner) is at most a quarter of D are clustered, in cells of the root level at
-  // most D / 2 across, where the faces' mean area is at most D^2 / 16; faces of less than 2^20 units
+  // most D / 2 across, where the faces' mean area is at most D^2 / 64; faces of less than 2^20 units
   // of their weight (2^-32 of the surface's area) stay single, so that a weight rounds by at most 2^-20
   // of it.
   static constexpr double cluster_reach = 0.25, cluster_side = 0.5, cluster_mean_area = 1.0 / 64;
