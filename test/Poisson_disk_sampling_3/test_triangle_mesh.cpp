@@ -65,14 +65,9 @@ TEST_P(MeshSampling, IsMaximalPoissonDiskSet)
   // clusters of them; a dart removes one fragment and adds at most four, or a cluster's children
   // (the clusters and faces under it: fewer than twice its faces in all)
   std::size_t positive = 0, roots = 0;
-  PDS::Triangle_fragment_traits_3 traits;
-  for(auto f : faces(m)) {
-    positive += PMP::face_area(f, m) > 0;
-    std::array<PDS::Triangle_fragment_traits_3::Point, 3> q;
-    int j = 0;
-    for(auto v : vertices_around_face(halfedge(f, m), m)) q[j++] = {{m.point(v).x(), m.point(v).y(), m.point(v).z()}};
-    traits.add_triangle(q[0], q[1], q[2]);
-  }
+  for(auto f : faces(m)) positive += PMP::face_area(f, m) > 0;
+  std::vector<Mesh::Face_index> face_of;
+  const PDS::Triangle_fragment_traits_3 traits = PDS::internal::triangles_of_mesh(m, CGAL::parameters::default_values(), face_of);
   traits.initial_fragments(boost::make_function_output_iterator([&](const auto&) { ++roots; }), d);
   EXPECT_LE(roots, 2 * positive); // (a long thin face: up to two blocks of rows)
   EXPECT_GE(stats.peak_active_fragments, roots);

@@ -285,7 +285,7 @@ public:
       }
       std::size_t b = a + 1;
       while(b < c->size() && clustered(b) && (c->code(b) >> shift) == (c->code(a) >> shift)) ++b;
-      *out++ = b - a == 1 ? make_fragment(c->face(a), 0) : make_cluster(a, b, c->max_reach(a, b));
+      *out++ = cluster(a, b, c->max_reach(a, b));
       a = b;
     }
     return out;
@@ -429,7 +429,7 @@ public:
   {
     CGAL_precondition(f.level < 63);
     if(is_cluster(f)) {
-      cluster_children(f, [&](const Fragment& c) { *out++ = c; });
+      cluster_children(f, [&](std::size_t a, std::size_t b, double reach) { *out++ = cluster(a, b, reach); });
       return out;
     }
     if(is_block(f)) {
@@ -455,12 +455,9 @@ public:
   {
     if(f.piece == 0) return refine(f, Whole_face(), near, around, radius, children);
     if(is_cluster(f)) { // (a face alone is tested as the cluster of its own cell: no read of its record)
-      const internal::Face_clusters& c = clusters();
       if(covers_range(near, f.face, cluster_end(f), f.v, radius)) return true;
-      c.children(f.face, cluster_end(f), [&](std::size_t a, std::size_t b) {
-        const double reach = b - a == 1 ? double(c.reach(a)) : c.max_reach(a, b);
-        if(!covers_range(near, a, b, reach, radius))
-          *children++ = b - a == 1 ? make_fragment(c.face(a), 0) : make_cluster(a, b, reach);
+      cluster_children(f, [&](std::size_t a, std::size_t b, double reach) {
+        if(!covers_range(near, a, b, reach, radius)) *children++ = cluster(a, b, reach);
       });
       return false;
     }
@@ -489,6 +486,11 @@ private:
     return f;
   }
   static std::size_t cluster_end(const Fragment& f) { return std::size_t(f.u); }
+  // the faces at positions [a, b) of the index: a cluster, or a face alone as its whole face
+  Fragment cluster(std::size_t a, std::size_t b, double reach) const
+  {
+    return b - a == 1 ? make_fragment(clusters().face(a), 0) : make_cluster(a, b, reach);
+  }
   const internal::Face_clusters& clusters() const { return clusters_->index; }
 
   // the index of the clusters if the faces are small enough at distance d to cluster them (made then)
@@ -540,15 +542,13 @@ private:
     return false;
   }
 
-  // calls put() with each child of a cluster: the clusters of the cells one level down, a face alone
-  // as its whole face
-  template <class Put>
-  void cluster_children(const Fragment& f, const Put& put) const
+  // calls visit(a, b, reach) with the positions [a, b) of each child of a cluster, the cells one level
+  // down, and their faces' largest reach (see cluster())
+  template <class Visit>
+  void cluster_children(const Fragment& f, const Visit& visit) const
   {
     const internal::Face_clusters& c = clusters();
-    c.children(f.face, cluster_end(f), [&](std::size_t a, std::size_t b) {
-      put(b - a == 1 ? make_fragment(c.face(a), 0) : make_cluster(a, b, c.max_reach(a, b)));
-    });
+    c.children(f.face, cluster_end(f), [&](std::size_t a, std::size_t b) { visit(a, b, c.max_reach(a, b)); });
   }
 
   // writes the roots of face i at distance d: the whole face, or its blocks of rows (see "Long thin
