@@ -1532,6 +1532,40 @@ TEST(TriangleFragments, ClustersOfSmallFacesTileThemAndBoundThem)
   EXPECT_GT(double(samples.size()), 0.6 * area / (d * d));
 }
 
+// Long thin faces of small area (strips 1 long and 1e-6 wide) have a mean area far below D^2 / 64 but
+// reach far beyond D / 4: none can be clustered, so the model does not make the index for them, and
+// its roots are the faces' own, in face order (the index would give them in the order of its curve,
+// which the shuffled strips make another)
+TEST(TriangleFragments, LongThinFacesOfSmallAreaAreNotClustered)
+{
+  typedef PDS::Triangle_fragment_traits_3 Traits;
+  typedef Traits::Fragment Fragment;
+  typedef Traits::Point P;
+  Random rng(43);
+  const int n = 400;
+  std::vector<int> row(n);
+  for(int i = 0; i < n; ++i) row[i] = i;
+  for(int i = n; i > 1; --i) std::swap(row[i - 1], row[rng.uniform_index(i)]);
+  Traits traits;
+  for(int i = 0; i < n; ++i) {
+    const double y = 0.01 * row[i], w = 1e-6;
+    traits.add_triangle(P{{0, y, 0}}, P{{1, y, 0}}, P{{1, y + w, 0}});
+    traits.add_triangle(P{{0, y, 0}}, P{{1, y + w, 0}}, P{{0, y + w, 0}});
+  }
+  const double d = 0.05;
+  ASSERT_LE(2 * n * 0.5e-6, d * d / 64 * 2 * n); // the mean area alone would cluster them
+  std::vector<Fragment> roots;
+  traits.initial_fragments(std::back_inserter(roots), d);
+  ASSERT_GE(roots.size(), std::size_t(2 * n));
+  for(std::size_t i = 0; i < roots.size(); ++i) {
+    EXPECT_FALSE(Traits::is_cluster(roots[i]));
+    if(i > 0) EXPECT_LE(roots[i - 1].face, roots[i].face) << "root " << i;
+  }
+  std::vector<int> seen(2 * n, 0);
+  for(const Fragment& r : roots) seen[r.face] = 1;
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), 2 * n);
+}
+
 TEST(TriangleFragments, PiecesOfLongThinFacesTileThem)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;

@@ -92,8 +92,9 @@ namespace Poisson_disk_sampling_3 {
 /// darts per sample instead of 8.0, and 1.87 fragments active per sample at the peak instead of 2.34
 /// (see `benchmark/README.md`, change 38).
 ///
-/// Clusters of small faces: where the faces are much smaller than D (their mean area at most D^2 / 64),
-/// a dart per face would cost hundreds of darts a sample, each finding its face covered.
+/// Clusters of small faces: where the faces are much smaller than D (their mean area at most D^2 / 64,
+/// and at least half of them reaching at most D / 4 from their centroid), a dart per face would cost
+/// hundreds of darts a sample, each finding its face covered.
 /// `initial_fragments(out, D)` then
 /// writes clusters: the faces whose reach (the largest distance from the centroid to a corner) is at
 /// most D / 4, and whose centroids lie in one cell of an octree at most D / 2 wide, sorted along a
@@ -193,7 +194,10 @@ public:
     if(f.area > 0)
       position_error_ = (std::max)(position_error_, 4 * std::numeric_limits<double>::epsilon() * scale);
     faces_.push_back(f);
-    if(f.area > 0) ++positive_faces_, area_sum_ += f.area;
+    if(f.area > 0) {
+      ++positive_faces_, area_sum_ += f.area;
+      count_reach(f);
+    }
     if(clusters_.use_count() != 1 || clusters_->built) clusters_ = std::make_shared<Clusters>();
     if(thin_normal[0] != 0 || thin_normal[1] != 0 || thin_normal[2] != 0)
       thin_face_normals_.emplace_back(std::uint32_t(faces_.size() - 1), thin_normal);
@@ -470,7 +474,9 @@ public:
 private:
   // Clusters of small faces (see the class description): faces whose reach (the largest distance from
   // the centroid to a corner) is at most a quarter of D are clustered, in cells of the root level at
-  // most D / 2 across, where the faces' mean area is at most D^2 / 64; faces of less than 2^20 units
+  // most D / 2 across, where the faces' mean area is at most D^2 / 64 and at least half of them reach at
+  // most D / 4 (counted by powers of two, reach_count_; long thin faces of small area do not cluster,
+  // and the index is not made for them); faces of less than 2^20 units
   // of their weight (2^-32 of the surface's area) stay single, so that a weight rounds by at most 2^-20
   // of it.
   static constexpr double cluster_reach = 0.25, cluster_side = 0.5, cluster_mean_area = 1.0 / 64;
@@ -496,7 +502,8 @@ private:
   // the index of the clusters if the faces are small enough at distance d to cluster them (made then)
   const internal::Face_clusters* clusters_for(double d) const
   {
-    if(!clusters_ || positive_faces_ < 64 || !(area_sum_ <= cluster_mean_area * d * d * double(positive_faces_)))
+    if(!clusters_ || positive_faces_ < 64 || !(area_sum_ <= cluster_mean_area * d * d * double(positive_faces_)) ||
+       2 * faces_within_reach(cluster_reach * d) < positive_faces_)
       return nullptr;
     Clusters& c = *clusters_;
     std::call_once(c.once, [this, &c] {
@@ -1314,6 +1321,34 @@ private:
   std::shared_ptr<Clusters> clusters_ = std::make_shared<Clusters>();
   double area_sum_ = 0;          // the faces' areas, summed in the order they were added
   std::size_t positive_faces_ = 0; // the faces of positive area
+  // reach_count_[k] faces of positive area have a reach (largest distance from the centroid to a
+  // corner) in [2^(k + reach_exponent_), 2^(k + 1 + reach_exponent_)), over the powers of two met:
+  // whether enough faces are small enough to cluster them at a distance, without the index
+  std::vector<std::uint32_t> reach_count_;
+  int reach_exponent_ = 0;
+
+  void count_reach(const Face& f)
+  {
+    const Point g{{(f.e1[0] + f.e2[0]) / 3, (f.e1[1] + f.e2[1]) / 3, (f.e1[2] + f.e2[2]) / 3}};
+    const double reach = (std::max)({length(g), distance(f.e1, g), distance(f.e2, g)});
+    if(!(reach > 0) || !std::isfinite(reach)) return;
+    const int e = std::ilogb(reach);
+    if(reach_count_.empty()) reach_exponent_ = e;
+    if(e < reach_exponent_) {
+      reach_count_.insert(reach_count_.begin(), std::size_t(reach_exponent_ - e), 0);
+      reach_exponent_ = e;
+    }
+    if(std::size_t(e - reach_exponent_) >= reach_count_.size()) reach_count_.resize(std::size_t(e - reach_exponent_) + 1, 0);
+    ++reach_count_[std::size_t(e - reach_exponent_)];
+  }
+  // a lower bound on the number of faces of positive area whose reach is at most r
+  std::size_t faces_within_reach(double r) const
+  {
+    std::size_t n = 0;
+    for(std::size_t k = 0; k < reach_count_.size() && std::ldexp(1.0, reach_exponent_ + int(k) + 1) <= r; ++k)
+      n += reach_count_[k];
+    return n;
+  }
 
   std::vector<Face> faces_;
   // the normals of the faces of positive area whose edges, as rounded, are on one line, by face index
