@@ -1121,8 +1121,8 @@ private:
   // the cap test and the apex, from the shape of the face only
   static void classify(Face& f)
   {
-    // edges opposite corners 0, 1, 2, divided by the largest coordinate so that squares neither
-    // underflow nor overflow
+    // edges opposite corners 0, 1, 2, scaled by the power of two that brings the largest coordinate to
+    // [1, 2) (exactly, and cheaper than a division), so that squares neither underflow nor overflow
     Point e[3];
     for(int i = 0; i < 3; ++i) {
       e[0][i] = f.e2[i] - f.e1[i];
@@ -1137,8 +1137,9 @@ private:
     f.foot = 0.5f;
     if(!(m > 0) || !std::isfinite(m)) return;
     double l2[3];
+    const int k = -internal::binary_exponent(m);
     for(int i = 0; i < 3; ++i) {
-      for(double& c : e[i]) c /= m;
+      for(double& c : e[i]) c = internal::times_power_of_two(c, k);
       l2[i] = dot(e[i], e[i]);
     }
     const int longest = l2[0] >= l2[1] ? (l2[0] >= l2[2] ? 0 : 2) : (l2[1] >= l2[2] ? 1 : 2);
@@ -1235,7 +1236,7 @@ private:
     const Point c = scaled_cross(e1, e2, k);
     const double scaled = 0.5 * length(c);
     if(!(scaled > 0) || k == 0) return scaled;
-    const double area = std::ldexp(scaled, 2 * k);
+    const double area = internal::times_power_of_two(scaled, 2 * k);
     return area > 0 ? area : std::numeric_limits<double>::denorm_min();
   }
   // the cross product of e1 and e2 divided by 2^(2k), computed on the edges scaled by 2^-k, which
@@ -1247,11 +1248,11 @@ private:
     for(int i = 0; i < 3; ++i) m = (std::max)({m, std::abs(e1[i]), std::abs(e2[i])});
     k = 0;
     if(!(m > 0) || !std::isfinite(m)) return cross(e1, e2);
-    k = std::ilogb(m);
+    k = internal::binary_exponent(m);
     Point a, b;
     for(int i = 0; i < 3; ++i) {
-      a[i] = std::ldexp(e1[i], -k);
-      b[i] = std::ldexp(e2[i], -k);
+      a[i] = internal::times_power_of_two(e1[i], -k);
+      b[i] = internal::times_power_of_two(e2[i], -k);
     }
     Point c = cross(a, b);
     if(c[0] == 0 && c[1] == 0 && c[2] == 0) {
@@ -1330,9 +1331,12 @@ private:
   void count_reach(const Face& f)
   {
     const Point g{{(f.e1[0] + f.e2[0]) / 3, (f.e1[1] + f.e2[1]) / 3, (f.e1[2] + f.e2[2]) / 3}};
-    const double reach = (std::max)({length(g), distance(f.e1, g), distance(f.e2, g)});
+    const double r2 = (std::max)({dot(g, g), squared_distance(f.e1, g), squared_distance(f.e2, g)});
+    const double reach = r2 >= 0x1.0p-1000 && r2 <= 0x1.0p+1000
+                             ? std::sqrt(r2)
+                             : (std::max)({length(g), distance(f.e1, g), distance(f.e2, g)});
     if(!(reach > 0) || !std::isfinite(reach)) return;
-    const int e = std::ilogb(reach);
+    const int e = internal::binary_exponent(reach);
     if(reach_count_.empty()) reach_exponent_ = e;
     if(e < reach_exponent_) {
       reach_count_.insert(reach_count_.begin(), std::size_t(reach_exponent_ - e), 0);

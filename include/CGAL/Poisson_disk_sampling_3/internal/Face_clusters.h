@@ -4,6 +4,7 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_FACE_CLUSTERS_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_FACE_CLUSTERS_H
 
+#include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/prefetch.h>
 
 #include <algorithm>
@@ -200,18 +201,6 @@ public:
   }
 
 private:
-  // x 2^e, by a product where 2^e is a double (ldexp is a call)
-  static double times_power_of_two(double x, int e)
-  {
-    return e >= -1000 && e <= 1000 ? x * power_of_two(e) : std::ldexp(x, e);
-  }
-  static double power_of_two(int e) // -1022 <= e <= 1023
-  {
-    std::uint64_t bits = std::uint64_t(e + 1023) << 52;
-    double x;
-    std::memcpy(&x, &bits, sizeof x);
-    return x;
-  }
 
   // the bits of x spread to every third bit
   static std::uint64_t spread(std::uint64_t x)
