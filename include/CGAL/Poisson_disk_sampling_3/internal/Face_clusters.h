@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -201,7 +200,6 @@ public:
   }
 
 private:
-
   // the bits of x spread to every third bit
   static std::uint64_t spread(std::uint64_t x)
   {
