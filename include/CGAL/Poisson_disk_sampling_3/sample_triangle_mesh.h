@@ -85,12 +85,15 @@ triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np,
   face_of.reserve(std::size_t(num_faces(tm)));
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
-    if(next(next(next(h, tm), tm), tm) != h)
+    const auto n = next(h, tm);
+    // three halfedges: the one after the next is the one before h (prev is the inverse of next), which
+    // a Surface_mesh stores with h, one dependent load fewer than walking around the face
+    if(next(n, tm) != prev(h, tm))
       throw Invalid_input(face_name(f, face_of.size()) + " is not a triangle; "
                           "triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces()");
     const std::array<double, 3> q[3] = {nearest_doubles(get(vpm, source(h, tm))),
                                         nearest_doubles(get(vpm, target(h, tm))),
-                                        nearest_doubles(get(vpm, target(next(h, tm), tm)))};
+                                        nearest_doubles(get(vpm, target(n, tm)))};
     traits.add_triangle(q[0], q[1], q[2], [&] { return face_name(f, face_of.size()); });
     face_of.push_back(f);
   }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -44,10 +45,11 @@ public:
   template <class Face>
   void build(std::size_t n, const Face& face, double slack)
   {
+    // first the entries with their face, reach and area (its bits in `weight`) and the centroids apart,
+    // then, once the cube and the unit of weight are known, their codes and weights
     std::vector<Point> centroid;
-    std::vector<double> reach, area;
-    std::vector<std::uint32_t> index;
-    centroid.reserve(n), reach.reserve(n), area.reserve(n), index.reserve(n);
+    std::vector<Entry> keyed;
+    centroid.reserve(n), keyed.reserve(n);
     Point lo{{0, 0, 0}}, hi{{0, 0, 0}};
     double total = 0, max_reach = 0;
     for(std::size_t i = 0; i < n; ++i) {
@@ -59,7 +61,12 @@ public:
         lo[j] = centroid.empty() ? c[j] : (std::min)(lo[j], c[j]);
         hi[j] = centroid.empty() ? c[j] : (std::max)(hi[j], c[j]);
       }
-      centroid.push_back(c), reach.push_back(r), area.push_back(a), index.push_back(std::uint32_t(i));
+      float rf = float(r);
+      if(double(rf) < r) rf = std::nextafter(rf, std::numeric_limits<float>::infinity());
+      std::uint64_t area_bits;
+      std::memcpy(&area_bits, &a, sizeof area_bits);
+      centroid.push_back(c);
+      keyed.push_back(Entry{0, area_bits, std::uint32_t(i), rf});
       total += a;
       max_reach = (std::max)(max_reach, r);
     }
@@ -82,30 +89,34 @@ public:
     // weights: areas as integers, in units of 2^-scale, their sum below 2^52 so that a range's sum,
     // converted to double, and u times it are exact to within one unit
     scale_ = total > 0 ? 51 - std::ilogb(total) : 0;
-    std::vector<Entry> keyed(m), other(m);
+    constexpr int digit = 12, digits = (3 * bits + digit - 1) / digit;
+    constexpr std::uint64_t mask = (std::uint64_t(1) << digit) - 1;
+    std::vector<std::size_t> count(std::size_t(digits) << digit, 0); // the digits' histograms, in one pass
     for(std::size_t i = 0; i < m; ++i) {
       std::uint64_t q[3];
       for(int j = 0; j < 3; ++j) {
         const double x = (centroid[i][j] - lo[j]) * to_grid;
         q[j] = x <= 0 ? 0 : x >= double((1u << bits) - 1) ? (1u << bits) - 1 : std::uint64_t(x);
       }
-      float r = float(reach[i]);
-      if(double(r) < reach[i]) r = std::nextafter(r, std::numeric_limits<float>::infinity());
-      keyed[i] = Entry{spread(q[0]) << 2 | spread(q[1]) << 1 | spread(q[2]),
-                       std::uint64_t(times_power_of_two(area[i], scale_)), index[i], r};
+      Entry& e = keyed[i];
+      e.code = spread(q[0]) << 2 | spread(q[1]) << 1 | spread(q[2]);
+      double a;
+      std::memcpy(&a, &e.weight, sizeof a);
+      e.weight = std::uint64_t(times_power_of_two(a, scale_));
+      for(int d = 0; d < digits; ++d) ++count[(std::size_t(d) << digit) + (e.code >> (d * digit) & mask)];
     }
-    constexpr int digit = 12;
-    constexpr std::uint64_t mask = (std::uint64_t(1) << digit) - 1;
-    std::vector<std::size_t> count(std::size_t(1) << digit);
-    for(int shift = 0; shift < 3 * bits; shift += digit) {
-      std::fill(count.begin(), count.end(), 0);
-      for(const Entry& k : keyed) ++count[k.code >> shift & mask];
+    std::vector<Point>().swap(centroid);
+    std::vector<Entry> other(m);
+    for(int d = 0; d < digits; ++d) {
+      std::size_t* c = &count[std::size_t(d) << digit];
+      if(std::find(c, c + (std::size_t(1) << digit), m) != c + (std::size_t(1) << digit)) continue; // one value
       std::size_t sum = 0;
-      for(std::size_t& c : count) {
-        const std::size_t k = c;
-        c = sum, sum += k;
+      for(std::size_t k = 0; k < (std::size_t(1) << digit); ++k) {
+        const std::size_t x = c[k];
+        c[k] = sum, sum += x;
       }
-      for(const Entry& k : keyed) other[count[k.code >> shift & mask]++] = k;
+      const int shift = d * digit;
+      for(const Entry& k : keyed) other[c[k.code >> shift & mask]++] = k;
       keyed.swap(other);
     }
     std::vector<Entry>().swap(other);
