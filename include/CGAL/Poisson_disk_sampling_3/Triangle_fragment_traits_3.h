@@ -511,11 +511,10 @@ private:
           faces_.size(),
           [this](std::size_t i, Point& centroid, double& reach) {
             const Face& f = faces_[i];
-            // the centroid relative to v0, then its distance to each corner; a distance rounds by a
-            // few eps of itself, and the centroid by eps of |v0| + the face's extent, which
-            // position_error() bounds (the index's slack)
-            const Point g{{(f.e1[0] + f.e2[0]) / 3, (f.e1[1] + f.e2[1]) / 3, (f.e1[2] + f.e2[2]) / 3}};
-            reach = (std::max)({length(g), distance(f.e1, g), distance(f.e2, g)}) * (1 + 0x1.0p-40);
+            // the centroid rounds by eps of |v0| + the face's extent, which position_error() bounds
+            // (the index's slack)
+            Point g;
+            reach = face_reach(f, g);
             for(int j = 0; j < 3; ++j) centroid[j] = f.v0[j] + g[j];
             return f.area;
           },
@@ -1328,13 +1327,21 @@ private:
   std::vector<std::uint32_t> reach_count_;
   int reach_exponent_ = 0;
 
-  void count_reach(const Face& f)
+  // the reach of a face, rounded up (a distance rounds by a few eps of itself), and its centroid
+  // relative to v0 in g: the largest distance from g to a corner
+  static double face_reach(const Face& f, Point& g)
   {
-    const Point g{{(f.e1[0] + f.e2[0]) / 3, (f.e1[1] + f.e2[1]) / 3, (f.e1[2] + f.e2[2]) / 3}};
+    g = Point{{(f.e1[0] + f.e2[0]) / 3, (f.e1[1] + f.e2[1]) / 3, (f.e1[2] + f.e2[2]) / 3}};
     const double r2 = (std::max)({dot(g, g), squared_distance(f.e1, g), squared_distance(f.e2, g)});
     const double reach = r2 >= 0x1.0p-1000 && r2 <= 0x1.0p+1000
-                             ? std::sqrt(r2)
+                             ? std::sqrt(r2) // the largest of length()'s three square roots
                              : (std::max)({length(g), distance(f.e1, g), distance(f.e2, g)});
+    return reach * (1 + 0x1.0p-40);
+  }
+  void count_reach(const Face& f)
+  {
+    Point g;
+    const double reach = face_reach(f, g);
     if(!(reach > 0) || !std::isfinite(reach)) return;
     const int e = internal::binary_exponent(reach);
     if(reach_count_.empty()) reach_exponent_ = e;
