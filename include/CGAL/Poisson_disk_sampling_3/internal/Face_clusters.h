@@ -174,7 +174,7 @@ public:
   void bounding_ball(std::size_t a, std::size_t b, double reach, Point& centre, double& radius) const
   {
     const int l = level(a, b);
-    const double h = std::ldexp(side_, -l);
+    const double h = times_power_of_two(side_, -l); // (each coverage test of a cluster: no call)
     const std::uint64_t c = entries_[a].code >> (3 * (bits - l));
     for(int j = 0; j < 3; ++j) centre[j] = origin_[j] + (double(gather(c >> (2 - j))) + 0.5) * h;
     radius = (0.8660254037844387 * h + 2 * slack_ + reach) * (1 + 0x1.0p-40);
