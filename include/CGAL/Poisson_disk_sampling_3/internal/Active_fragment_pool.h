@@ -307,7 +307,7 @@ private:
   std::size_t bin_of(double area) const
   {
     if(area >= max_area_) return 0;
-    int b = max_exponent_ - std::ilogb(area);
+    int b = max_exponent_ - binary_exponent(area); // (std::ilogb, without a call of the library)
     if(b < 0) b = 0;
     if(b + 1 < normal_bins_) {
       while(b > 0 && area > bound(std::size_t(b))) --b;

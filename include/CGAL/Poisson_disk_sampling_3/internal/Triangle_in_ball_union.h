@@ -4,6 +4,7 @@
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
 #define CGAL_POISSON_DISK_SAMPLING_3_INTERNAL_TRIANGLE_IN_BALL_UNION_H
 
+#include <CGAL/Poisson_disk_sampling_3/internal/power_of_half.h>
 #include <CGAL/Poisson_disk_sampling_3/internal/weights_of_three.h>
 
 #include <algorithm>
@@ -258,10 +259,9 @@ private:
                         double shrink)
   {
     const Point& o = corner[0];
-    int e;
-    // 2^-e for radius = m 2^e, m in [1/2, 1): the quotient is a power of two, so the division is
-    // exact (and cheaper than ldexp); the scaled radius is m
-    const double scale = std::frexp(radius, &e) / radius;
+    // 2^-e for radius = m 2^e, m in [1/2, 1) (std::frexp's e, without a call of the library): the
+    // scaled radius is m, exactly
+    const double scale = times_power_of_two(1., -(binary_exponent(radius) + 1));
     auto rel = [&](const Point& p) {
       return V{number((p[0] - o[0]) * scale), number((p[1] - o[1]) * scale), number((p[2] - o[2]) * scale)};
     };
