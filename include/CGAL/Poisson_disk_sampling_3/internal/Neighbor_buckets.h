@@ -119,6 +119,7 @@ public:
     for(const Copy& c : copies_) {
       const std::vector<Point>& b = buckets_[c.bucket];
       if(b.size() < b.capacity()) internal::prefetch(b.data() + b.size());
+      else prefetch_points(&b); // a full bucket is moved to a larger array: every line is read
     }
     for(const Copy& c : copies_) {
       // a bucket grows by a quarter, not by doubling: the buckets' free room is the largest part of
