@@ -378,12 +378,15 @@ public:
           Neighbor_buckets::prefetch_header(d.bucket);
         }
         lap(bucket_stage);
-        for(std::size_t k = first; k < last; ++k) Neighbor_buckets::prefetch_points(darts[k].bucket);
+        // The batch's buckets (8 cache lines each on average) do not all fit in the first-level cache:
+        // asked for there, they evicted each other and what the stages read in the meantime. They are
+        // asked for into the second level, and the scan asks again for the bucket a few darts ahead,
+        // which then comes from there into the first.
+        for(std::size_t k = first; k < last; ++k)
+          Neighbor_buckets::prefetch_points_to_second_level(darts[k].bucket);
         lap(points_stage);
         // one scan of each bucket finds both whether the dart is free and the samples that may cover
-        // its fragment, which the refinement below needs. The batch's buckets (8 cache lines each on
-        // average) do not all fit in the first-level cache, where the stage above asked for them: the
-        // scan asks again for the bucket a few darts ahead, which then comes from the second level.
+        // its fragment, which the refinement below needs
         for(std::size_t k = first; k < last; ++k) {
           Dart& d = darts[k];
           if(k + lookahead < last) Neighbor_buckets::prefetch_points(darts[k + lookahead].bucket);

@@ -31,6 +31,19 @@ inline void prefetch(const void* p)
 #endif
 }
 
+/// As `prefetch()`, but into the second-level cache, not the first (locality 2: x86's prefetcht1),
+/// for data asked for long before it is read, which in the first level would evict what is read
+/// before it
+inline void prefetch_to_second_level(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p, 0, 2);
+  __asm__ volatile("" : : "r"(p)); // (see prefetch())
+#else
+  (void)p;
+#endif
+}
+
 /// Asks for every cache line of the object at `p`. An object of up to 64 bytes can cross the end of
 /// a line (24-byte bucket headers, in an array, do at two places in eight): the lines
 /// of its first and last bytes are all of its lines. One of up to 128 bytes (a triangle's face
