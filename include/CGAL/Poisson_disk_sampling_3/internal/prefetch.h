@@ -15,12 +15,14 @@ namespace CGAL {
 namespace Poisson_disk_sampling_3 {
 namespace internal {
 
-/// Asks the processor to bring the cache line of `p` in, without waiting for it; a hint only (no
-/// effect on the results, nothing on compilers without the builtin).
-inline void prefetch(const void* p)
+/// Asks the processor to bring the cache line of `p` in, without waiting for it, with the builtin's
+/// `locality` (3: every level of cache; 2: the second level and beyond, x86's prefetcht1); a hint
+/// only (no effect on the results, nothing on compilers without the builtin).
+template <int locality>
+inline void prefetch_with_locality(const void* p)
 {
 #if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
+  __builtin_prefetch(p, 0, locality);
   // GCC's interprocedural analysis counts a prefetch as no effect: it takes a function that only
   // prefetches (`Neighbor_buckets::prefetch_points`, `Active_fragment_pool::prefetch`) for one
   // without effects, and at -O2 deletes the calls to it. An empty volatile assembly statement is an
@@ -31,18 +33,12 @@ inline void prefetch(const void* p)
 #endif
 }
 
-/// As `prefetch()`, but into the second-level cache, not the first (locality 2: x86's prefetcht1),
-/// for data asked for long before it is read, which in the first level would evict what is read
-/// before it
-inline void prefetch_to_second_level(const void* p)
-{
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p, 0, 2);
-  __asm__ volatile("" : : "r"(p)); // (see prefetch())
-#else
-  (void)p;
-#endif
-}
+/// into every level of cache
+inline void prefetch(const void* p) { prefetch_with_locality<3>(p); }
+
+/// into the second-level cache, not the first: for data asked for long before it is read, which in
+/// the first level would evict what is read before it
+inline void prefetch_to_second_level(const void* p) { prefetch_with_locality<2>(p); }
 
 /// Asks for every cache line of the object at `p`. An object of up to 64 bytes can cross the end of
 /// a line (24-byte bucket headers, in an array, do at two places in eight): the lines
