@@ -96,9 +96,11 @@ public:
   /// Optional. The initial fragments for the minimum distance `minimum_distance`, which must tile the
   /// same surface; the engine and the maximality certificate use it instead of the one above when a
   /// model defines it. A model whose root fragments would split badly at some scale cuts them first
-  /// (`Triangle_fragment_traits_3` cuts long thin triangles into pieces one to four times max(D, w)
-  /// long, w their width; the engine counts the roots before storing any, and refuses them when they
-  /// outnumber the faces by more than four times `maximum_number_of_points` plus six per face).
+  /// (`Triangle_fragment_traits_3` writes a long thin triangle as one block of rows per needle, at most
+  /// two per face, whose rows, one to four times max(D, w) long with w its width, are made as darts
+  /// halve the blocks; and clusters where the faces are much smaller than D; the engine counts the
+  /// roots before storing any, and refuses them when they outnumber the faces by more than four times
+  /// `maximum_number_of_points` plus six per face).
   template <class OutputIterator>
   OutputIterator initial_fragments(OutputIterator out, double minimum_distance) const;
 

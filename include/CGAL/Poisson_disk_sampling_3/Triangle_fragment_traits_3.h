@@ -60,8 +60,10 @@ namespace Poisson_disk_sampling_3 {
 ///
 /// With w the face's shortest edge (a needle) or its height over its longest edge (a cap), L its
 /// longest edge, and 2^k the largest power of two up to L / max(D, w) (at most 2^12), the rows are
-/// one to two times max(D, w) long (up to four times in a cap). A face with L < 4 max(D, w) stays
-/// whole: cutting it would save fewer darts than the pieces cost (lion.off at a million points is as
+/// one to two times max(D, w) long (up to four times in a cap) where L < 2^13 max(D, w); a face longer
+/// than that has 2^12 rows, longer (see the user manual, "Long thin triangles"). A face with
+/// L < 4 max(D, w) stays whole: cutting it would save fewer darts than the pieces cost (lion.off at a
+/// million points is as
 /// fast either way).
 ///
 /// The rows are made as darts reach them: `initial_fragments(out, D)` writes one fragment per needle,
@@ -93,8 +95,8 @@ namespace Poisson_disk_sampling_3 {
 /// (see `benchmark/README.md`, change 38).
 ///
 /// Clusters of small faces: where the faces are much smaller than D (their mean area at most D^2 / 64,
-/// and at least half of them reaching at most D / 4 from their centroid), a dart per face would cost
-/// hundreds of darts a sample, each finding its face covered.
+/// at least half of them reaching at most D / 4 from their centroid, and at least 64 faces of positive
+/// area), a dart per face would cost hundreds of darts a sample, each finding its face covered.
 /// `initial_fragments(out, D)` then
 /// writes clusters: the faces whose reach (the largest distance from the centroid to a corner) is at
 /// most D / 4, and whose centroids lie in one cell of an octree at most D / 2 wide, sorted along a

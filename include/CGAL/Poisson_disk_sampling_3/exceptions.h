@@ -16,7 +16,9 @@ namespace Poisson_disk_sampling_3 {
 /// Thrown for input that cannot be sampled: an empty surface, a face that is not a triangle,
 /// NaN or infinite coordinates, a radius, minimum distance or point count that is not positive and
 /// finite, a minimum distance outside 2^-400 to 2^400 or not above 2^20 times the coordinates'
-/// rounding error, or contradictory size parameters. The message says which.
+/// rounding error, contradictory size parameters, among others (the user manual lists them all under
+/// "Bad input": a parameter given twice, a negative seed, an area above the largest double, ...). The
+/// message says which.
 class Invalid_input : public std::invalid_argument
 {
 public:

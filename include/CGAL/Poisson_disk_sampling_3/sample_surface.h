@@ -68,8 +68,10 @@ struct Sampling_statistics
   std::size_t darts_on_covered_fragments = 0;
   /// the most fragments active at the start of a batch of darts in the last run: about what the
   /// engine's pool of fragments holds at its largest (for triangles, 32 bytes each), which a batch
-  /// exceeds by the children of its darts, at most four a dart and 256 darts, until the fragments
-  /// they came from leave the pool
+  /// exceeds by the children of its darts (at most 256 darts; four children a dart at most for a piece
+  /// of a triangle, one a cell one level down for a cluster of small faces, or one a face where its
+  /// faces' centroids share one cell of the finest level), until the fragments they came from leave
+  /// the pool
   std::size_t peak_active_fragments = 0;
 };
 
@@ -535,8 +537,9 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///     \cgalParamDescription{a target count N: the function searches the minimum distance whose maximal set has
 ///       N points within 1% (at least one point). Its first run takes the plane's density (about 0.6965 area /
 ///       d^2 points) or, where random points on the surface say that a ball holds far less than pi r^2 of it
-///       (strips much narrower than the distance), a distance from them, within a quarter of the target on the
-///       strips measured. The search takes one to three full runs where that distance is about right, more for
+///       (strips much narrower than the distance), a distance from them, whose count was 12% too few to 30% too
+///       many on the strips measured. The search takes one to three full runs where that distance is about
+///       right, more for
 ///       small targets; two or three where the count does not go as d^-2 (sheets stacked closer than the
 ///       distance), whose first step takes the slope that the random points give. A run stops at 2N + 64 points or the
 ///       bound, so that the samples held stay at most 2N + 64 (one run's: no earlier run's are kept). The

@@ -92,8 +92,9 @@ inline std::size_t close_pairs(const std::vector<double>& xyz, double d, std::si
 /// neither a plane nor a line at the scale of d: on 500 strips 0.01 apart, a run at its distance
 /// for 3,000 points (about 3.5 times their spacing) has 12% too few to 30% too many at seeds 0 to
 /// 7; on strips 10 and 1 apart, lines at that scale, 10% too few to 8% too many at seeds 0 to 2 (a
-/// third too few with the plane's constant alone); test
-/// `MeshSampling.FirstCountDistanceFromRandomPoints`. The points number 20 sqrt(n), at least 1,000
+/// third too few with the plane's constant alone). Test `MeshSampling.FirstCountDistanceFromRandomPoints`
+/// checks the 10 strips 10 apart within 15% at seeds 0 to 2, and the 500 strips within 20% at 1,000 and
+/// 3,000 points at seeds 0 and 1. The points number 20 sqrt(n), at least 1,000
 /// and at most 200,000: from 2,500 to 10^8 points, about 440 of their pairs lie within the distance
 /// sought, a spread of about 5% (more pairs below, fewer above).
 ///
