@@ -556,7 +556,8 @@ void sample_request(const Traits& traits, const NamedParameters& np, Sampling_st
 ///       it, and 64); the number of samples accepted never exceeds it either. The roots a model writes
 ///       for the distance (its optional `initial_fragments(out, d)`) may outnumber its faces by at most
 ///       four times the bound plus six per face (`Triangle_fragment_traits_3` writes at most two per
-///       face).}
+///       face). A bound of 2^64 or more, given as a floating-point number, is taken as the largest
+///       `std::size_t`. The bound is a guard against requests far beyond the machine, not a memory limit.}
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{100 million}
 ///   \cgalParamNEnd
