@@ -370,9 +370,10 @@ TEST(SphereSampling, FirstSampleIsUniform)
   EXPECT_LT(one_sample_ks_distance(longitudes, [](double t) { return t; }), bound);
 }
 
-// Area-uniform darts make the heights z of the samples uniform on [-R, R] (Archimedes); a biased
-// sampler (e.g. uniform in phi) would crowd the poles. Ten slabs of equal area, compared with a
-// chi-square bound far above its 9-degree-of-freedom expectation but far below what a bias gives.
+// A whole run's samples are spread evenly in height, as the area is (Archimedes: slabs of equal height
+// have equal area): ten slabs, compared with a chi-square bound far above its 9-degree-of-freedom
+// expectation. A maximal set covers the sphere whatever the darts' bias, so this checks the run's
+// density, not the darts' uniformity, which FirstSampleIsUniform checks.
 TEST(SphereSampling, HeightsAreUniform)
 {
   std::vector<Point> points;
