@@ -4,8 +4,9 @@
 // What the example programs' command lines share: numbers read strictly (a malformed one is an error,
 // never a silent 0), each option at most once (a second value is an error, never a silent choice),
 // and the one size option every sampler takes (--radius, --minimum-distance or --count) with --seed
-// and --maximum-number-of-points, passed on to the library, which checks the values and names the
-// bad one.
+// and --maximum-number-of-points: sizes that are no positive number are refused here, as a command
+// line the program cannot use; the library checks the rest (a distance against the surface's precision,
+// a count against the bound) and names the bad value.
 
 #ifndef CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
 #define CGAL_POISSON_DISK_SAMPLING_3_EXAMPLES_COMMAND_LINE_H
@@ -91,9 +92,34 @@ inline std::string read_file_name(int argc, char** argv, int& i)
   const std::string option = argv[i];
   if(i + 1 >= argc) throw Usage_error("missing file name after " + option);
   const std::string name = argv[++i];
-  if(name.empty() || name[0] == '-')
+  if(name.empty()) throw Usage_error(option + " takes a file name, not an empty one");
+  if(name[0] == '-')
     throw Usage_error(option + " takes a file name, not \"" + name + "\" (for a file of that name: ./" + name + ")");
   return name;
+}
+
+/// Throws unless `name` can be a file to write: not a folder, in a folder that exists. Checked before
+/// sampling, so that a run is not lost for a mistyped path (writing can still fail, on a full disk).
+inline void check_output_path(const std::string& name)
+{
+  std::error_code error;
+  const std::filesystem::path path(name);
+  if(std::filesystem::is_directory(path, error)) throw Usage_error("-o names a folder: " + name);
+  const std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+  if(!std::filesystem::is_directory(folder, error))
+    throw Usage_error("-o names a file in a folder that does not exist: " + name);
+}
+
+/// Prints `text` (the usage and the defaults) and `exit_statuses` on the standard output (for --help):
+/// 0, or 1 with a line on the standard error if they could not be written.
+inline int help(const std::string& text)
+{
+  std::cout << text << exit_statuses << std::flush;
+  if(!std::cout) {
+    std::cerr << "error: cannot write the usage to the standard output\n";
+    return 1;
+  }
+  return 0;
 }
 
 /// Closes `out`, the file `name` being written, and throws unless all of it was written: the last
@@ -174,15 +200,20 @@ struct Size_options
     return true;
   }
 
-  /// what the library cannot check itself: one size at most, integers where integers are meant
+  /// one size at most, a positive and finite one, integers below 10^18 where integers are meant (the
+  /// library then checks the values against the surface: a distance too small for its coordinates'
+  /// precision, a count above the bound)
   void check() const
   {
     if(bool(radius) + bool(minimum_distance) + bool(count) > 1)
       throw Usage_error("give one of --radius, --minimum-distance, --count");
+    if(radius && !(*radius > 0 && std::isfinite(*radius))) throw Usage_error("--radius takes a positive number");
+    if(minimum_distance && !(*minimum_distance > 0 && std::isfinite(*minimum_distance)))
+      throw Usage_error("--minimum-distance takes a positive number");
     if(count && !(*count >= 1 && *count == std::floor(*count) && *count < 1e18))
-      throw Usage_error("--count takes a positive integer");
+      throw Usage_error("--count takes a positive integer below 10^18");
     if(max_points && !(*max_points >= 1 && *max_points == std::floor(*max_points) && *max_points < 1e18))
-      throw Usage_error("--maximum-number-of-points takes a positive integer");
+      throw Usage_error("--maximum-number-of-points takes a positive integer below 10^18");
   }
 
   /// Calls `sample(np)` with the named parameters of the size given, the seed, the bound and `stats`

@@ -26,9 +26,11 @@
 #include "command_line.h"
 
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <new>
@@ -48,10 +50,44 @@ namespace {
 const char* const usage_line = "usage: sample_mesh [MESH] [--radius R | --minimum-distance D | --count N] [--seed S]\n"
                                "                   [--maximum-number-of-points M] [-o OUT.ply]\n";
 
+const char* const defaults =
+    "MESH: any file CGAL reads, its format chosen by its extension (.off, .obj, .ply, .stl); by default\n"
+    "lion.off from CGAL's data set. With no size, about 10,000 points; --seed 0; --maximum-number-of-points\n"
+    "100000000. The samples are written to OUT.ply (by default samples.ply, replaced if it exists).\n";
+
 int usage(const char* message)
 {
   std::cerr << "error: " << message << "\n" << usage_line;
   return 2;
+}
+
+// CGAL 5.5's STL reader takes a binary file's corner whose coordinate is NaN for an earlier corner
+// (it merges equal points in a std::map, where a NaN is neither less nor greater than any coordinate,
+// so that it falls on a point already there): another surface, unsaid. Returns what is wrong with a binary STL file (80 bytes, a count n, then n triangles of
+// 50 bytes), or nothing, also for a file that is not one (whose text has no byte of a float that is
+// not finite).
+std::string binary_stl_problem(const std::string& path)
+{
+  std::string extension = std::filesystem::path(path).extension().string();
+  for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if(extension != ".stl" || error || size < 84) return std::string();
+  std::ifstream in(path, std::ios::binary);
+  unsigned char count[4];
+  in.seekg(80);
+  if(!in.read(reinterpret_cast<char*>(count), 4)) return std::string();
+  const std::uintmax_t n = std::uintmax_t(count[0]) | std::uintmax_t(count[1]) << 8 |
+                           std::uintmax_t(count[2]) << 16 | std::uintmax_t(count[3]) << 24;
+  if(size != 84 + 50 * n) return std::string();
+  unsigned char triangle[50];
+  for(std::uintmax_t t = 0; t < n && in.read(reinterpret_cast<char*>(triangle), 50); ++t)
+    for(int k = 3; k < 12; ++k) { // the corners' coordinates, after the normal: little-endian floats
+      const unsigned char* b = triangle + 4 * k;
+      if((b[3] & 0x7f) == 0x7f && (b[2] & 0x80) != 0) // all the exponent's bits: infinite or NaN
+        return "triangle " + std::to_string(t) + " has a coordinate that is not finite";
+    }
+  return std::string();
 }
 
 // CGAL 5.5's PLY reader dereferences a null pointer where a vertex coordinate is not a float or a
@@ -194,10 +230,7 @@ int main(int argc, char** argv)
   try {
     for(int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if(examples::is_help(a)) {
-        std::cout << usage_line << examples::exit_statuses;
-        return 0;
-      }
+      if(examples::is_help(a)) return examples::help(std::string(usage_line) + defaults);
       if(size.read(argc, argv, i, seen)) continue;
       if(a == "-o") {
         seen.once(a);
@@ -207,15 +240,22 @@ int main(int argc, char** argv)
       else throw examples::Usage_error("more than one mesh");
     }
     size.check();
+    examples::check_output_path(out_file);
   } catch(const examples::Usage_error& e) {
     return usage(e.what());
   }
   if(mesh_file.empty()) mesh_file = examples::data_file("lion.off");
 
   try {
-    const std::string ply_problem = ply_header_problem(mesh_file);
-    if(!ply_problem.empty()) {
-      std::cerr << "error: cannot read " << mesh_file << ": " << ply_problem << "\n";
+    std::error_code error;
+    if(std::filesystem::is_directory(mesh_file, error) || !std::ifstream(mesh_file, std::ios::binary)) {
+      std::cerr << "error: cannot open " << mesh_file << "\n";
+      return 1;
+    }
+    const std::string file_problem =
+        ply_header_problem(mesh_file) + binary_stl_problem(mesh_file); // (a file is one or the other)
+    if(!file_problem.empty()) {
+      std::cerr << "error: cannot read " << mesh_file << ": " << file_problem << "\n";
       return 1;
     }
     // The file's polygons, read once, checked, then made into a mesh where they make a valid one.
@@ -228,7 +268,8 @@ int main(int argc, char** argv)
       // a count of the file that no vector can hold (a negative one, read as unsigned)
     }
     if(!read) {
-      std::cerr << "error: cannot read a polygon mesh or polygon soup from " << mesh_file << "\n";
+      std::cerr << "error: cannot read a polygon mesh or polygon soup from " << mesh_file
+                << " (its format is chosen by its extension: .off, .obj, .ply or .stl)\n";
       return 1;
     }
     std::size_t not_triangles = 0;
@@ -241,8 +282,8 @@ int main(int argc, char** argv)
       not_triangles += (soup_polygons[i].size() != 3);
       for(std::size_t v : soup_polygons[i])
         if(v >= soup_points.size()) {
-          std::cerr << "error: polygon " << i << " of " << mesh_file << " refers to point " << v << ", of "
-                    << soup_points.size() << " points\n";
+          std::cerr << "error: polygon " << i << " of " << mesh_file << " refers to point " << v
+                    << " (counted from 0), of " << soup_points.size() << " points\n";
           return 1;
         }
     }

@@ -30,6 +30,11 @@ const char* const usage_line = "usage: sample_sphere [--center X Y Z] [--sphere-
                                "[--radius r | --minimum-distance D | --count N]\n"
                                "                     [--seed S] [--maximum-number-of-points M] [-o OUT.ply]\n";
 
+const char* const defaults =
+    "The sphere: by default centred at 0 0 0, of radius 1. With no size, about 10,000 points; --seed 0;\n"
+    "--maximum-number-of-points 100000000. The samples are written to OUT.ply (by default\n"
+    "sphere_samples.ply, replaced if it exists).\n";
+
 int usage(const char* message)
 {
   std::cerr << "error: " << message << "\n" << usage_line;
@@ -47,10 +52,7 @@ int main(int argc, char** argv)
   try {
     for(int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if(examples::is_help(a)) {
-        std::cout << usage_line << examples::exit_statuses;
-        return 0;
-      }
+      if(examples::is_help(a)) return examples::help(std::string(usage_line) + defaults);
       if(size.read(argc, argv, i, seen)) continue;
       if(a == "--center") {
         seen.once(a);
@@ -66,6 +68,7 @@ int main(int argc, char** argv)
       } else throw examples::Usage_error("unknown argument or missing value: " + a);
     }
     size.check();
+    examples::check_output_path(out_file);
   } catch(const examples::Usage_error& e) {
     return usage(e.what());
   }
