@@ -1339,6 +1339,28 @@ TEST(TriangleFragments, RefineKeepsEveryUncoveredPointInExactlyOnePiece)
   EXPECT_GT(halves_dropped, 50);
 }
 
+// The point off the plane of the triangle q, above its circumcentre, at distance `reach` from its
+// corners (as computed in doubles); nothing where the circumradius is not below sqrt(0.9) D (obtuse
+// triangles among them), or `reach` below it.
+std::optional<std::array<double, 3>> centre_above_circumcentre(const std::array<double, 3> (&q)[3], double D,
+                                                               double reach)
+{
+  double a[3], b[3];
+  for(int i = 0; i < 3; ++i) a[i] = q[1][i] - q[0][i], b[i] = q[2][i] - q[0][i];
+  const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+  const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2], det = 2 * (aa * bb - ab * ab);
+  const double s = bb * (aa - ab) / det, t = aa * (bb - ab) / det; // circumcentre q0 + s a + t b
+  const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  double cc[3], R2 = 0;
+  for(int i = 0; i < 3; ++i) cc[i] = s * a[i] + t * b[i], R2 += cc[i] * cc[i];
+  if(!(R2 < 0.9 * D * D) || !(R2 < reach * reach)) return std::nullopt;
+  const double h = std::sqrt(reach * reach - R2);
+  std::array<double, 3> centre;
+  for(int i = 0; i < 3; ++i) centre[i] = q[0][i] + (cc[i] + h * n[i] / nn);
+  return centre;
+}
+
 // level() is the depth by size: a fragment's area is at most 4^-level() of its root's and more than
 // 4^-(level() + 1) of it, for the pieces that chord cuts leave as for the children of midpoint
 // subdivision; and a fragment above the engine's floor (depth 40) leaves its lattice room to be split
@@ -1376,19 +1398,9 @@ TEST(TriangleFragments, CoverageMarginIsRelativeToTheFaceNotTheOrigin)
     // 1e-7 outside; position_error() is 1.4e-7 D to 2.7e-7 D here, and the margin it gave the
     // single-ball test, four times that, kept every delta below -1e-7 from being proven covered
     const double delta = (rng.uniform() < 0.5 ? -1 : 1) * (1e-7 + 2e-7 * rng.uniform());
-    double a[3], b[3];
-    for(int i = 0; i < 3; ++i) a[i] = q[1][i] - q[0][i], b[i] = q[2][i] - q[0][i];
-    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-    const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2], det = 2 * (aa * bb - ab * ab);
-    const double s = bb * (aa - ab) / det, t = aa * (bb - ab) / det; // circumcentre q0 + s a + t b
-    double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    double cc[3], R2 = 0;
-    for(int i = 0; i < 3; ++i) cc[i] = s * a[i] + t * b[i], R2 += cc[i] * cc[i];
-    if(!(R2 < 0.9 * D * D)) continue; // an obtuse triangle: no such centre
-    const double h = std::sqrt(D * D * (1 + delta) * (1 + delta) - R2);
-    P centre;
-    for(int i = 0; i < 3; ++i) centre[i] = q[0][i] + (cc[i] + h * n[i] / nn);
+    const std::optional<P> above = centre_above_circumcentre(q, D, D * (1 + delta));
+    if(!above) continue;
+    const P centre = *above;
     // the exact distances of the face's corners (the input points) from the centre as rounded
     ET farthest(0);
     for(const P& c : q) {
@@ -1439,21 +1451,11 @@ TEST(TriangleFragments, SingleBallTestIsConservativeAtTheBoundary)
     std::vector<Traits::Fragment> roots;
     traits.initial_fragments(std::back_inserter(roots));
     if(roots.size() != 1) continue;
-    // a centre off the plane above the circumcentre, the corners at about D (1 + delta) from it
-    double a[3], b[3];
-    for(int i = 0; i < 3; ++i) a[i] = q[1][i] - q[0][i], b[i] = q[2][i] - q[0][i];
-    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-    const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2], det = 2 * (aa * bb - ab * ab);
-    const double s = bb * (aa - ab) / det, t = aa * (bb - ab) / det;
-    double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    double cc[3], R2 = 0;
-    for(int i = 0; i < 3; ++i) cc[i] = s * a[i] + t * b[i], R2 += cc[i] * cc[i];
+    // a centre off the plane above the circumcentre, the corners at about D from it
     const double D = 0.2;
-    if(!(R2 < 0.9 * D * D) || !(D > 0x1.0p20 * traits.position_error())) continue;
-    const double h = std::sqrt(D * D - R2);
-    P centre;
-    for(int i = 0; i < 3; ++i) centre[i] = q[0][i] + (cc[i] + h * n[i] / nn);
+    const std::optional<P> above = centre_above_circumcentre(q, D, D);
+    if(!above || !(D > 0x1.0p20 * traits.position_error())) continue;
+    const P centre = *above;
     ET farthest(0);
     for(const P& c : q) {
       ET d2(0);
