@@ -1361,6 +1361,27 @@ std::optional<std::array<double, 3>> centre_above_circumcentre(const std::array<
   return centre;
 }
 
+// q0 = o, and q1, q2 within `size` / 2 of it in each coordinate, at random
+void random_triangle(const std::array<double, 3>& o, double size, Random& rng, std::array<double, 3> (&q)[3])
+{
+  for(int j = 0; j < 3; ++j) q[j] = o;
+  for(int j = 1; j < 3; ++j)
+    for(int i = 0; i < 3; ++i) q[j][i] += size * (rng.uniform() - 0.5);
+}
+
+// the largest squared distance from `centre` to a corner of q, exactly
+CGAL::Exact_rational farthest_squared(const std::array<double, 3> (&q)[3], const std::array<double, 3>& centre)
+{
+  typedef CGAL::Exact_rational ET;
+  ET farthest(0);
+  for(const std::array<double, 3>& c : q) {
+    ET d2(0);
+    for(int i = 0; i < 3; ++i) d2 += (ET(c[i]) - ET(centre[i])) * (ET(c[i]) - ET(centre[i]));
+    farthest = (std::max)(farthest, d2);
+  }
+  return farthest;
+}
+
 // level() is the depth by size: a fragment's area is at most 4^-level() of its root's and more than
 // 4^-(level() + 1) of it, for the pieces that chord cuts leave as for the children of midpoint
 // subdivision; and a fragment above the engine's floor (depth 40) leaves its lattice room to be split
@@ -1383,9 +1404,8 @@ TEST(TriangleFragments, CoverageMarginIsRelativeToTheFaceNotTheOrigin)
   int in_band = 0;
   for(int trial = 0; trial < 200; ++trial) {
     const P o{{2e6 * (1 + rng.uniform()), -6e5 * (1 + rng.uniform()), 4e4 * (1 + rng.uniform())}};
-    P q[3] = {o, o, o};
-    for(int j = 1; j < 3; ++j)
-      for(int i = 0; i < 3; ++i) q[j][i] += 0.01 * (rng.uniform() - 0.5);
+    P q[3];
+    random_triangle(o, 0.01, rng, q);
     Traits traits;
     traits.add_triangle(q[0], q[1], q[2]);
     std::vector<Traits::Fragment> roots;
@@ -1402,12 +1422,7 @@ TEST(TriangleFragments, CoverageMarginIsRelativeToTheFaceNotTheOrigin)
     if(!above) continue;
     const P centre = *above;
     // the exact distances of the face's corners (the input points) from the centre as rounded
-    ET farthest(0);
-    for(const P& c : q) {
-      ET d2(0);
-      for(int i = 0; i < 3; ++i) d2 += (ET(c[i]) - ET(centre[i])) * (ET(c[i]) - ET(centre[i]));
-      farthest = (std::max)(farthest, d2);
-    }
+    const ET farthest = farthest_squared(q, centre);
     const ET D2 = ET(D) * ET(D);
     if(delta < 0) {
       ASSERT_LT(farthest, D2 * ET(1 - 5e-8)) << "trial " << trial; // inside by more than 5e-8 D^2
@@ -1443,9 +1458,8 @@ TEST(TriangleFragments, SingleBallTestIsConservativeAtTheBoundary)
   for(int trial = 0; trial < 4000; ++trial) {
     const double far = trial % 2 == 0 ? 1 : 1e6;
     const P o{{far * (1 + rng.uniform()), -far * (1 + rng.uniform()), far * (0.5 + rng.uniform())}};
-    P q[3] = {o, o, o};
-    for(int j = 1; j < 3; ++j)
-      for(int i = 0; i < 3; ++i) q[j][i] += 0.1 * (rng.uniform() - 0.5);
+    P q[3];
+    random_triangle(o, 0.1, rng, q);
     Traits traits;
     traits.add_triangle(q[0], q[1], q[2]);
     std::vector<Traits::Fragment> roots;
@@ -1456,12 +1470,7 @@ TEST(TriangleFragments, SingleBallTestIsConservativeAtTheBoundary)
     const std::optional<P> above = centre_above_circumcentre(q, D, D);
     if(!above || !(D > 0x1.0p20 * traits.position_error())) continue;
     const P centre = *above;
-    ET farthest(0);
-    for(const P& c : q) {
-      ET d2(0);
-      for(int i = 0; i < 3; ++i) d2 += (ET(c[i]) - ET(centre[i])) * (ET(c[i]) - ET(centre[i]));
-      farthest = (std::max)(farthest, d2);
-    }
+    const ET farthest = farthest_squared(q, centre);
     // radii from 8 units in the last place below the farthest corner's distance to 8 above
     const double r0 = std::sqrt(CGAL::to_double(farthest));
     for(int k = -8; k <= 8; ++k) {
