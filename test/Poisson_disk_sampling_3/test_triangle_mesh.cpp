@@ -207,7 +207,7 @@ TEST(MeshSampling, ThreadsThrowDartsInParallel)
 // coordinates each have the distribution function 1 - (1 - t)^2, and x + y has s^2, over 400 seeds (a
 // Kolmogorov-Smirnov bound at the 0.1% level each). A sample drawn as (a, b (1 - a)), on the triangle
 // but crowded at its corner x = 1, fails the first; one whose y alone is skewed within the triangle
-// (b replaced by (1 - a) t^2, t = b / (1 - a), which keeps x's distribution), the second.
+// (b replaced by (1 - a) t^2, t = b / (1 - a), which keeps x's distribution), the second and the third.
 TEST(MeshSampling, FirstSampleIsUniformOnATriangle)
 {
   const std::vector<Point> corners{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
