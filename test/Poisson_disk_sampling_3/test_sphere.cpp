@@ -732,9 +732,10 @@ TEST(SphereFragments, UnionCoverageIsSoundNearTheEdgeOfCoverage)
 // degrees apart around O: where O, evaluated with 50 digits on the stored centres, is farther than R
 // from all three, the rectangle holds a point no ball covers and the union test must say false,
 // however shallow the hole (down to a few units in the last place). At delta = -10^-3 it must prove
-// at least half of the rectangles covered (all of them, with the code of 2026-11-26). At 30 places, on a unit sphere at the origin and on another off it; rectangles
-// 10^-2 to 10^-12 of the sphere's radius wide. Without the margin of its exact check (a bound on its
-// rounding) the test claimed two of these holes, at a depth of 2 10^-16.
+// at least half of the rectangles covered (all of them, with the code of 2026-11-26). At 30 places, on
+// a unit sphere at the origin and on another off it; rectangles 10^-2 to 10^-12 of the sphere's radius
+// wide. Without the margin of its exact check (a bound on its rounding) the test claimed two of these
+// holes, at a depth of 2 10^-16.
 TEST(SphereFragments, UnionCoverageIsExactAtAHoleOfAnySize)
 {
   typedef boost::multiprecision::cpp_bin_float_50 Exact;
