@@ -1382,14 +1382,6 @@ CGAL::Exact_rational farthest_squared(const std::array<double, 3> (&q)[3], const
   return farthest;
 }
 
-// level() is the depth by size: a fragment's area is at most 4^-level() of its root's and more than
-// 4^-(level() + 1) of it, for the pieces that chord cuts leave as for the children of midpoint
-// subdivision; and a fragment above the engine's floor (depth 40) leaves its lattice room to be split
-// down to it with corners of at most 52 bits. A cut puts its pieces on a finer lattice than their
-// size needs; when the lattice's level counted as depth, chains of cuts reached the floor while their
-// pieces were still 2^-28 of their face, and the sampler dropped them with gaps left (the test
-// DepthFloor/MeshSampling.IsMaximalPoissonDiskSet). Chains of steps with one ball that holds
-// a corner of the fragment, whole random triangles near the origin and far from it, down to the floor.
 // Far from the origin, a ball covers a fragment unless a corner is farther from its centre than the
 // radius less a margin relative to the face's size and the radius, not to the coordinates. With the
 // coordinates' rounding, position_error(), as the margin, the balls' boundaries carried a band about
@@ -1487,6 +1479,14 @@ TEST(TriangleFragments, SingleBallTestIsConservativeAtTheBoundary)
   EXPECT_GT(covered_near, 1000);
 }
 
+// level() is the depth by size: a fragment's area is at most 4^-level() of its root's and more than
+// 4^-(level() + 1) of it, for the pieces that chord cuts leave as for the children of midpoint
+// subdivision; and a fragment above the engine's floor (depth 40) leaves its lattice room to be split
+// down to it with corners of at most 52 bits. A cut puts its pieces on a finer lattice than their
+// size needs; when the lattice's level counted as depth, chains of cuts reached the floor while their
+// pieces were still 2^-28 of their face, and the sampler dropped them with gaps left (the test
+// DepthFloor/MeshSampling.IsMaximalPoissonDiskSet). Chains of steps with one ball that holds
+// a corner of the fragment, whole random triangles near the origin and far from it, down to the floor.
 TEST(TriangleFragments, LevelIsTheDepthBySizeAndCutsLeaveRoomForIt)
 {
   typedef PDS::Triangle_fragment_traits_3 Traits;
