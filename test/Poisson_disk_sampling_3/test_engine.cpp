@@ -928,8 +928,8 @@ TEST(Engine, DecidesTheMinimumDistanceExactly)
 {
   typedef CGAL::Exact_rational Q;
   struct Case { double x, y, d; std::size_t samples; };
-  // exactly D apart, the doubles' sum of squares below D^2; and closer than D by about 1.5e-16 of
-  // D^2, their sum of squares above it
+  // exactly D apart, the doubles' sum of squares below D^2; and closer than D, x^2 + y^2 below D^2 by
+  // 1.5e-16 (2.2e-17 of D^2), the doubles' sum of squares above it
   for(const Case& c : {Case{3.090883054775892, 4.121177406367856, 5.15147175795982, 2},
                        Case{1.516743225676319, 2.0814110690092744, 2.575418810762501, 1}}) {
     const Q exact = Q(c.x) * Q(c.x) + Q(c.y) * Q(c.y) - Q(c.d) * Q(c.d);
