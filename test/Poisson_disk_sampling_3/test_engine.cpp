@@ -1361,12 +1361,22 @@ std::optional<std::array<double, 3>> centre_above_circumcentre(const std::array<
   return centre;
 }
 
-// q0 = o, and q1, q2 within `size` / 2 of it in each coordinate, at random
-void random_triangle(const std::array<double, 3>& o, double size, Random& rng, std::array<double, 3> (&q)[3])
+// A random face added to `traits`, its corners in q: q0 = o, and q1, q2 within `size` / 2 of it in each
+// coordinate. Returns the face's root fragment, or nothing where it has none (a face of area 0) or
+// several (a long thin face, cut into pieces).
+std::optional<PDS::Triangle_fragment_traits_3::Fragment> random_face(const std::array<double, 3>& o, double size,
+                                                                     Random& rng,
+                                                                     PDS::Triangle_fragment_traits_3& traits,
+                                                                     std::array<double, 3> (&q)[3])
 {
   for(int j = 0; j < 3; ++j) q[j] = o;
   for(int j = 1; j < 3; ++j)
     for(int i = 0; i < 3; ++i) q[j][i] += size * (rng.uniform() - 0.5);
+  traits.add_triangle(q[0], q[1], q[2]);
+  std::vector<PDS::Triangle_fragment_traits_3::Fragment> roots;
+  traits.initial_fragments(std::back_inserter(roots));
+  if(roots.size() != 1) return std::nullopt;
+  return roots[0];
 }
 
 // the largest squared distance from `centre` to a corner of q, exactly
@@ -1397,12 +1407,9 @@ TEST(TriangleFragments, CoverageMarginIsRelativeToTheFaceNotTheOrigin)
   for(int trial = 0; trial < 200; ++trial) {
     const P o{{2e6 * (1 + rng.uniform()), -6e5 * (1 + rng.uniform()), 4e4 * (1 + rng.uniform())}};
     P q[3];
-    random_triangle(o, 0.01, rng, q);
     Traits traits;
-    traits.add_triangle(q[0], q[1], q[2]);
-    std::vector<Traits::Fragment> roots;
-    traits.initial_fragments(std::back_inserter(roots));
-    if(roots.size() != 1) continue;
+    const std::optional<Traits::Fragment> root = random_face(o, 0.01, rng, traits, q);
+    if(!root) continue;
     const double D = 0.013;
     ASSERT_GT(D, 0x1.0p20 * traits.position_error()); // a distance the samplers accept
     // a centre off the plane above the circumcentre, at D (1 + delta) from the corners: delta below
@@ -1420,15 +1427,15 @@ TEST(TriangleFragments, CoverageMarginIsRelativeToTheFaceNotTheOrigin)
       ASSERT_LT(farthest, D2 * ET(1 - 5e-8)) << "trial " << trial; // inside by more than 5e-8 D^2
       ++in_band;
       const std::vector<P> one{centre};
-      EXPECT_TRUE(traits.is_covered(roots[0], centre, D)) << "trial " << trial;
-      EXPECT_TRUE(traits.is_covered_by_union(roots[0], one, D)) << "trial " << trial;
+      EXPECT_TRUE(traits.is_covered(*root, centre, D)) << "trial " << trial;
+      EXPECT_TRUE(traits.is_covered_by_union(*root, one, D)) << "trial " << trial;
       std::vector<Traits::Fragment> children;
-      EXPECT_TRUE(traits.refine(roots[0], one, one, D, std::back_inserter(children))) << "trial " << trial;
+      EXPECT_TRUE(traits.refine(*root, one, one, D, std::back_inserter(children))) << "trial " << trial;
     } else {
       ASSERT_GT(farthest, D2) << "trial " << trial;
       const std::vector<P> one{centre};
-      EXPECT_FALSE(traits.is_covered(roots[0], centre, D)) << "trial " << trial;
-      EXPECT_FALSE(traits.is_covered_by_union(roots[0], one, D)) << "trial " << trial;
+      EXPECT_FALSE(traits.is_covered(*root, centre, D)) << "trial " << trial;
+      EXPECT_FALSE(traits.is_covered_by_union(*root, one, D)) << "trial " << trial;
     }
   }
   EXPECT_GT(in_band, 50);
@@ -1451,12 +1458,9 @@ TEST(TriangleFragments, SingleBallTestIsConservativeAtTheBoundary)
     const double far = trial % 2 == 0 ? 1 : 1e6;
     const P o{{far * (1 + rng.uniform()), -far * (1 + rng.uniform()), far * (0.5 + rng.uniform())}};
     P q[3];
-    random_triangle(o, 0.1, rng, q);
     Traits traits;
-    traits.add_triangle(q[0], q[1], q[2]);
-    std::vector<Traits::Fragment> roots;
-    traits.initial_fragments(std::back_inserter(roots));
-    if(roots.size() != 1) continue;
+    const std::optional<Traits::Fragment> root = random_face(o, 0.1, rng, traits, q);
+    if(!root) continue;
     // a centre off the plane above the circumcentre, the corners at about D from it
     const double D = 0.2;
     const std::optional<P> above = centre_above_circumcentre(q, D, D);
@@ -1470,10 +1474,10 @@ TEST(TriangleFragments, SingleBallTestIsConservativeAtTheBoundary)
       for(int step = 0; step < (k < 0 ? -k : k); ++step) r = std::nextafter(r, k < 0 ? 0. : 1.);
       if(ET(r) * ET(r) < farthest) {
         ++outside;
-        EXPECT_FALSE(traits.is_covered(roots[0], centre, r)) << "trial " << trial << ", " << k << " ulps";
+        EXPECT_FALSE(traits.is_covered(*root, centre, r)) << "trial " << trial << ", " << k << " ulps";
       }
     }
-    if(traits.is_covered(roots[0], centre, r0 * (1 + 1e-9))) ++covered_near;
+    if(traits.is_covered(*root, centre, r0 * (1 + 1e-9))) ++covered_near;
   }
   EXPECT_GT(outside, 10000);
   EXPECT_GT(covered_near, 1000);
